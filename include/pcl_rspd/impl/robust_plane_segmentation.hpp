@@ -1,0 +1,686 @@
+/*
+ * pcl_rspd: RobustPlaneSegmentation — input checks, neighbourhoods, and outputs around the
+ * non-template pipeline (pcl::rspd::detectPlanes).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/normal_estimation.h>
+#include <pcl_rspd/plane_colors.h>
+#include <pcl_rspd/robust_plane_segmentation.h>
+
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+#include <pcl/sample_consensus/method_types.h>
+#include <pcl/sample_consensus/model_types.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+
+namespace pcl
+{
+namespace rspd
+{
+namespace detail
+{
+/** Convex hull of 2D points (Andrew's monotone chain), counter-clockwise, collinear points dropped. */
+inline std::vector<Eigen::Vector2d>
+convexHull2D (std::vector<Eigen::Vector2d> pts)
+{
+  std::sort (pts.begin (), pts.end (), [] (const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x () < b.x () || (a.x () == b.x () && a.y () < b.y ());
+  });
+  pts.erase (std::unique (pts.begin (), pts.end ()), pts.end ());
+  if (pts.size () < 3)
+    return pts;
+  auto cross = [] (const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x () - o.x ()) * (b.y () - o.y ()) - (a.y () - o.y ()) * (b.x () - o.x ());
+  };
+  std::vector<Eigen::Vector2d> hull (2 * pts.size ());
+  std::size_t h = 0;
+  for (std::size_t i = 0; i < pts.size (); ++i)
+  {
+    while (h >= 2 && cross (hull[h - 2], hull[h - 1], pts[i]) <= 0)
+      --h;
+    hull[h++] = pts[i];
+  }
+  for (std::size_t i = pts.size () - 1, lower = h + 1; i-- > 0;)
+  {
+    while (h >= lower && cross (hull[h - 2], hull[h - 1], pts[i]) <= 0)
+      --h;
+    hull[h++] = pts[i];
+  }
+  hull.resize (h - 1);
+  return hull;
+}
+} // namespace detail
+} // namespace rspd
+
+template <typename PointT, typename NormalT>
+RobustPlaneSegmentation<PointT, NormalT>::RobustPlaneSegmentation ()
+  : model_type_ (pcl::SACMODEL_PLANE), method_type_ (pcl::SAC_RANSAC)
+{}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setInputCloud (const PointCloudConstPtr& cloud)
+{
+  PCLBase<PointT>::setInputCloud (cloud);
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setIndices (const IndicesPtr& indices)
+{
+  PCLBase<PointT>::setIndices (indices);
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setIndices (const IndicesConstPtr& indices)
+{
+  PCLBase<PointT>::setIndices (indices);
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setIndices (const PointIndicesConstPtr& indices)
+{
+  PCLBase<PointT>::setIndices (indices);
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setIndices (std::size_t row_start, std::size_t col_start,
+                                                      std::size_t nb_rows, std::size_t nb_cols)
+{
+  PCLBase<PointT>::setIndices (row_start, col_start, nb_rows, nb_cols);
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setInputNormals (const NormalsConstPtr& normals)
+{
+  normals_ = normals;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSearchMethod (const SearchPtr& search)
+{
+  search_ = search;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNumberOfNeighbours (int k)
+{
+  if (k < 3)
+  {
+    PCL_ERROR ("[pcl::%s::setNumberOfNeighbours] k must be at least 3 (got %d); keeping %d\n",
+               getClassName ().c_str (), k, k_);
+    return;
+  }
+  k_ = k;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMinPatchSizeRatio (double ratio)
+{
+  if (!(ratio > 0.0 && ratio <= 1.0))
+  {
+    PCL_ERROR ("[pcl::%s::setMinPatchSizeRatio] the ratio must be in (0, 1] (got %g); keeping %g\n",
+               getClassName ().c_str (), ratio, min_patch_ratio_);
+    return;
+  }
+  min_patch_ratio_ = ratio;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMinPatchSize (std::size_t min_size)
+{
+  if (min_size != 0 && min_size < 3)
+  {
+    PCL_ERROR ("[pcl::%s::setMinPatchSize] a patch needs at least 3 samples (got %zu); keeping %zu\n",
+               getClassName ().c_str (), min_size, min_patch_size_);
+    return;
+  }
+  min_patch_size_ = min_size;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNumberOfThreads (unsigned int threads)
+{
+  params_.num_threads = static_cast<int> (threads);
+  // The output does not depend on the thread count: the cache stays valid.
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMinDistanceTestAngle (double radians)
+{
+  if (!(radians > 0.0 && radians < M_PI / 2.0))
+  {
+    PCL_ERROR ("[pcl::%s::setMinDistanceTestAngle] the angle must be in (0, pi/2) radians (got %g)\n",
+               getClassName ().c_str (), radians);
+    return;
+  }
+  params_.min_distance_angle = radians;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMaxNormalDeviation (double radians)
+{
+  if (!(radians > 0.0 && radians <= M_PI / 2.0))
+  {
+    PCL_ERROR ("[pcl::%s::setMaxNormalDeviation] the angle must be in (0, pi/2] radians (got %g)\n",
+               getClassName ().c_str (), radians);
+    return;
+  }
+  params_.max_normal_deviation = radians;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMaxOutlierRatio (double ratio)
+{
+  if (!(ratio > 0.0 && ratio <= 1.0))
+  {
+    PCL_ERROR ("[pcl::%s::setMaxOutlierRatio] the ratio must be in (0, 1] (got %g)\n", getClassName ().c_str (), ratio);
+    return;
+  }
+  params_.max_outlier_ratio = ratio;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setAlpha (double alpha)
+{
+  if (!(alpha > 0.0 && std::isfinite (alpha)))
+  {
+    PCL_ERROR ("[pcl::%s::setAlpha] alpha must be positive (got %g)\n", getClassName ().c_str (), alpha);
+    return;
+  }
+  params_.alpha = alpha;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setDistanceFloorRatio (double ratio)
+{
+  if (!(ratio >= 0.0 && ratio < 1.0))
+  {
+    PCL_ERROR ("[pcl::%s::setDistanceFloorRatio] the ratio must be in [0, 1) (got %g)\n", getClassName ().c_str (), ratio);
+    return;
+  }
+  params_.distance_floor_ratio = ratio;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNormalDeviationFloor (double radians)
+{
+  if (!(radians >= 0.0 && radians < M_PI / 2.0))
+  {
+    PCL_ERROR ("[pcl::%s::setNormalDeviationFloor] the angle must be in [0, pi/2) (got %g)\n",
+               getClassName ().c_str (), radians);
+    return;
+  }
+  params_.normal_deviation_floor = radians;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setAlignNormalsBeforeMedian (bool align)
+{
+  params_.align_normals = align;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMaxGrowMergeIterations (int iterations)
+{
+  if (iterations < 1)
+  {
+    PCL_ERROR ("[pcl::%s::setMaxGrowMergeIterations] need at least 1 (got %d)\n", getClassName ().c_str (), iterations);
+    return;
+  }
+  params_.max_iterations = iterations;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setModelType (int model)
+{
+  model_type_ = model;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMethodType (int method)
+{
+  method_type_ = method;
+  PCL_DEBUG ("[pcl::%s::setMethodType] ignored: the method is deterministic\n", getClassName ().c_str ());
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setDistanceThreshold (double threshold)
+{
+  distance_threshold_ = threshold;
+  PCL_DEBUG ("[pcl::%s::setDistanceThreshold] ignored: each plane's MDP is estimated from the data\n",
+             getClassName ().c_str ());
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMaxIterations (int)
+{
+  PCL_DEBUG ("[pcl::%s::setMaxIterations] ignored: no random sampling (see setMaxGrowMergeIterations)\n",
+             getClassName ().c_str ());
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setProbability (double)
+{
+  PCL_DEBUG ("[pcl::%s::setProbability] ignored: no random sampling\n", getClassName ().c_str ());
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setOptimizeCoefficients (bool)
+{
+  PCL_DEBUG ("[pcl::%s::setOptimizeCoefficients] ignored: coefficients come from the robust estimate\n",
+             getClassName ().c_str ());
+}
+
+template <typename PointT, typename NormalT> bool
+RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
+{
+  const std::string class_name = getClassName ();
+  const char* name = class_name.c_str ();
+  if (!input_)
+  {
+    PCL_ERROR ("[pcl::%s::segment] no input cloud was given\n", name);
+    return false;
+  }
+  switch (model_type_)
+  {
+    case pcl::SACMODEL_PLANE:
+    case pcl::SACMODEL_PERPENDICULAR_PLANE:
+    case pcl::SACMODEL_PARALLEL_PLANE:
+    case pcl::SACMODEL_NORMAL_PLANE:
+    case pcl::SACMODEL_NORMAL_PARALLEL_PLANE:
+      break;
+    default:
+      PCL_ERROR ("[pcl::%s::segment] only plane models are supported (model type %d)\n", name, model_type_);
+      return false;
+  }
+  const std::size_t cloud_size = input_->size ();
+  if (cloud_size == 0)
+  {
+    PCL_ERROR ("[pcl::%s::segment] the input cloud is empty\n", name);
+    return false;
+  }
+  if (normals_ && normals_->size () != cloud_size)
+  {
+    PCL_ERROR ("[pcl::%s::segment] the normals hold %zu points but the cloud %zu\n", name, normals_->size (),
+               cloud_size);
+    return false;
+  }
+
+  // The samples to work on: the caller's indices (checked, sorted, repeats dropped) or all points.
+  std::vector<pcl::index_t> candidates;
+  if (indices_)
+  {
+    candidates.assign (indices_->begin (), indices_->end ());
+    for (const auto i : candidates)
+      if (i < 0 || static_cast<std::size_t> (i) >= cloud_size)
+      {
+        PCL_ERROR ("[pcl::%s::segment] index %d is out of range (the cloud holds %zu points)\n", name,
+                   static_cast<int> (i), cloud_size);
+        return false;
+      }
+    std::sort (candidates.begin (), candidates.end ());
+    const std::size_t before = candidates.size ();
+    candidates.erase (std::unique (candidates.begin (), candidates.end ()), candidates.end ());
+    if (candidates.size () != before)
+      PCL_DEBUG ("[pcl::%s::segment] %zu repeated indices ignored\n", name, before - candidates.size ());
+  }
+  else
+  {
+    candidates.resize (cloud_size);
+    for (std::size_t i = 0; i < cloud_size; ++i)
+      candidates[i] = static_cast<pcl::index_t> (i);
+  }
+
+  // Valid samples: finite positions (NaN must never reach the octree or the search) and, when the
+  // caller gave normals, a finite non-zero normal.
+  std::size_t bad_normals = 0;
+  points_ = pcl::rspd::PointSet ();
+  points_.input_indices.reserve (candidates.size ());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant (HUGE_VAL), hi = Eigen::Vector3d::Constant (-HUGE_VAL);
+  for (const auto i : candidates)
+  {
+    const PointT& p = (*input_)[i];
+    if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z))
+      continue;
+    if (normals_)
+    {
+      const NormalT& n = (*normals_)[i];
+      const double len2 = double (n.normal_x) * n.normal_x + double (n.normal_y) * n.normal_y + double (n.normal_z) * n.normal_z;
+      if (!std::isfinite (len2) || !(len2 > 0.0))
+      {
+        ++bad_normals;
+        continue;
+      }
+    }
+    points_.input_indices.push_back (i);
+    const Eigen::Vector3d q (p.x, p.y, p.z);
+    lo = lo.cwiseMin (q);
+    hi = hi.cwiseMax (q);
+  }
+  if (bad_normals > 0)
+    PCL_WARN ("[pcl::%s::segment] %zu points with a NaN or zero-length normal were left out\n", name, bad_normals);
+  const std::size_t n = points_.input_indices.size ();
+  if (n == 0)
+  {
+    PCL_ERROR ("[pcl::%s::segment] no valid point: every point is non-finite\n", name);
+    return false;
+  }
+  if (n <= static_cast<std::size_t> (k_))
+  {
+    PCL_ERROR ("[pcl::%s::segment] %zu valid points: need more than k = %d\n", name, n, k_);
+    return false;
+  }
+
+  // Centre in double precision before any statistic: a scene 1 km from the origin keeps its
+  // float resolution and gives the same planes as at the origin.
+  points_.offset = 0.5 * (lo + hi);
+  points_.points.resize (n);
+  for (std::size_t s = 0; s < n; ++s)
+  {
+    const PointT& p = (*input_)[points_.input_indices[s]];
+    points_.points[s] = (Eigen::Vector3d (p.x, p.y, p.z) - points_.offset).cast<float> ();
+  }
+  if (normals_)
+  {
+    points_.normals.resize (n);
+    for (std::size_t s = 0; s < n; ++s)
+    {
+      const NormalT& nn = (*normals_)[points_.input_indices[s]];
+      points_.normals[s] = Eigen::Vector3d (nn.normal_x, nn.normal_y, nn.normal_z).normalized ().cast<float> ();
+    }
+  }
+  params_.min_patch_size = min_patch_size_ > 0
+      ? min_patch_size_
+      : std::max<std::size_t> (10, static_cast<std::size_t> (std::ceil (min_patch_ratio_ * static_cast<double> (n))));
+  return true;
+}
+
+template <typename PointT, typename NormalT> bool
+RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
+{
+  const std::string class_name = getClassName ();
+  const char* name = class_name.c_str ();
+  const std::size_t n = points_.size ();
+  if (search_)
+  {
+    // The caller's search structure, over the valid samples only.
+    auto valid = std::make_shared<pcl::Indices> (points_.input_indices.begin (), points_.input_indices.end ());
+    search_->setInputCloud (input_, valid);
+    std::vector<std::uint32_t> to_internal (input_->size (), std::numeric_limits<std::uint32_t>::max ());
+    for (std::size_t s = 0; s < n; ++s)
+      to_internal[points_.input_indices[s]] = static_cast<std::uint32_t> (s);
+    graph_ = pcl::rspd::NeighborGraph (n, k_);
+    bool short_answer = false;
+    const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
+#pragma omp parallel for schedule(dynamic, 256) num_threads(pcl::rspd::resolveThreads (params_.num_threads))
+    for (std::ptrdiff_t s = 0; s < count; ++s)
+    {
+      pcl::Indices nn;
+      std::vector<float> d2;
+      search_->nearestKSearch ((*input_)[points_.input_indices[s]], k_ + 1, nn, d2);
+      std::vector<std::pair<float, std::uint32_t>> found;
+      found.reserve (nn.size ());
+      for (std::size_t j = 0; j < nn.size (); ++j)
+      {
+        if (nn[j] < 0 || static_cast<std::size_t> (nn[j]) >= to_internal.size ())
+          continue;
+        const std::uint32_t t = to_internal[nn[j]];
+        if (t != std::numeric_limits<std::uint32_t>::max () && t != static_cast<std::uint32_t> (s))
+          found.emplace_back (d2[j], t);
+      }
+      std::sort (found.begin (), found.end ()); // by distance, ties by index: deterministic
+      if (found.size () < static_cast<std::size_t> (k_))
+      {
+#pragma omp atomic write
+        short_answer = true;
+        continue;
+      }
+      std::uint32_t* row = graph_.row (s);
+      for (int j = 0; j < k_; ++j)
+        row[j] = found[j].second;
+    }
+    if (short_answer)
+    {
+      PCL_ERROR ("[pcl::%s::segment] the search method returned fewer than k = %d neighbours\n", name, k_);
+      return false;
+    }
+  }
+  else if (!pcl::rspd::buildKnnGraph (points_.points, k_, params_.num_threads, graph_))
+  {
+    PCL_ERROR ("[pcl::%s::segment] could not build the %d-nearest-neighbour graph\n", name, k_);
+    return false;
+  }
+  if (!normals_)
+  {
+    PCL_DEBUG ("[pcl::%s::segment] no normals given: estimating them by PCA over the %d-neighbourhoods\n",
+               name, k_);
+    pcl::rspd::estimateNormals (points_.points, graph_, params_.num_threads, points_.normals);
+  }
+  return true;
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::buildPlanes (const std::vector<pcl::rspd::DetectedPatch>& patches)
+{
+  planes_.clear ();
+  planes_.reserve (patches.size ());
+  labels_.assign (input_->size (), 0);
+  const Eigen::Vector3d origin = input_->sensor_origin_.template head<3> ().template cast<double> ();
+  for (std::size_t p = 0; p < patches.size (); ++p)
+  {
+    const pcl::rspd::DetectedPatch& patch = patches[p];
+    RobustPlane plane;
+    plane.indices.header = input_->header;
+    plane.coefficients.header = input_->header;
+    plane.indices.indices.reserve (patch.members.size ());
+    for (const auto s : patch.members)
+    {
+      const pcl::index_t i = points_.input_indices[s];
+      plane.indices.indices.push_back (i);
+      labels_[i] = static_cast<std::uint32_t> (p + 1);
+    }
+    plane.center = patch.center + points_.offset;
+    plane.normal = patch.normal;
+    if ((origin - plane.center).dot (plane.normal) < 0.0)
+      plane.normal = -plane.normal;
+    plane.coefficients.values = {static_cast<float> (plane.normal.x ()), static_cast<float> (plane.normal.y ()),
+                                 static_cast<float> (plane.normal.z ()),
+                                 static_cast<float> (-plane.normal.dot (plane.center))};
+    plane.mdp = patch.mdp;
+    plane.mnd = patch.mnd;
+
+    // Centroid and covariance (centred frame, then shifted back), for pcl::PlanarRegion.
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+    for (const auto s : patch.members)
+      mean += points_.points[s].template cast<double> ();
+    mean /= static_cast<double> (patch.members.size ());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+    for (const auto s : patch.members)
+    {
+      const Eigen::Vector3d d = points_.points[s].template cast<double> () - mean;
+      cov += d * d.transpose ();
+    }
+    plane.covariance = cov / static_cast<double> (patch.members.size ());
+    plane.centroid = mean + points_.offset;
+
+    // Oriented rectangle and convex hull of the members projected on the plane, in a basis
+    // (u, v, normal) that is right-handed so the hull runs counter-clockwise about the normal.
+    const Eigen::Vector3d u0 = plane.normal.unitOrthogonal ();
+    const Eigen::Vector3d v0 = plane.normal.cross (u0);
+    std::vector<Eigen::Vector2d> flat;
+    flat.reserve (patch.members.size ());
+    Eigen::Vector2d fmean = Eigen::Vector2d::Zero ();
+    for (const auto s : patch.members)
+    {
+      const Eigen::Vector3d d = points_.points[s].template cast<double> () - patch.center;
+      flat.emplace_back (d.dot (u0), d.dot (v0));
+      fmean += flat.back ();
+    }
+    fmean /= static_cast<double> (flat.size ());
+    Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero ();
+    for (const auto& q : flat)
+      scatter += (q - fmean) * (q - fmean).transpose ();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver (scatter);
+    const Eigen::Vector2d a1 = solver.eigenvectors ().col (1), a2 = solver.eigenvectors ().col (0);
+    double lo1 = HUGE_VAL, hi1 = -HUGE_VAL, lo2 = HUGE_VAL, hi2 = -HUGE_VAL;
+    for (const auto& q : flat)
+    {
+      lo1 = std::min (lo1, q.dot (a1)); hi1 = std::max (hi1, q.dot (a1));
+      lo2 = std::min (lo2, q.dot (a2)); hi2 = std::max (hi2, q.dot (a2));
+    }
+    plane.rect_axes[0] = (a1.x () * u0 + a1.y () * v0).normalized ();
+    plane.rect_axes[1] = plane.normal.cross (plane.rect_axes[0]);
+    plane.rect_size = Eigen::Vector2d (hi1 - lo1, hi2 - lo2);
+    const double sign2 = plane.rect_axes[1].dot (a2.x () * u0 + a2.y () * v0) < 0.0 ? -1.0 : 1.0;
+    plane.rect_center = plane.center + 0.5 * (lo1 + hi1) * plane.rect_axes[0] + sign2 * 0.5 * (lo2 + hi2) * plane.rect_axes[1];
+    for (const auto& q : pcl::rspd::detail::convexHull2D (std::move (flat)))
+      plane.hull.push_back (plane.center + q.x () * u0 + q.y () * v0);
+    planes_.push_back (std::move (plane));
+  }
+}
+
+template <typename PointT, typename NormalT> bool
+RobustPlaneSegmentation<PointT, NormalT>::compute ()
+{
+  if (computed_ && ok_)
+    return true;
+  computed_ = false;
+  ok_ = false;
+  planes_.clear ();
+  labels_.clear ();
+  stats_ = pcl::rspd::DetectorStatistics ();
+  try
+  {
+    if (!prepareSamples () || !prepareNeighbourhoods ())
+    {
+      points_ = pcl::rspd::PointSet ();
+      graph_ = pcl::rspd::NeighborGraph ();
+      return false;
+    }
+    std::vector<pcl::rspd::DetectedPatch> patches;
+    pcl::rspd::detectPlanes (points_, graph_, params_, patches, &stats_);
+    buildPlanes (patches);
+  }
+  catch (const std::exception& e)
+  {
+    PCL_ERROR ("[pcl::%s::segment] %s\n", getClassName ().c_str (), e.what ());
+    planes_.clear ();
+    labels_.clear ();
+    return false;
+  }
+  computed_ = true;
+  ok_ = true;
+  return true;
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::segment (std::vector<pcl::ModelCoefficients>& coefficients,
+                                                   std::vector<pcl::PointIndices>& indices)
+{
+  coefficients.clear ();
+  indices.clear ();
+  if (!compute ())
+    return;
+  coefficients.reserve (planes_.size ());
+  indices.reserve (planes_.size ());
+  for (const auto& plane : planes_)
+  {
+    coefficients.push_back (plane.coefficients);
+    indices.push_back (plane.indices);
+  }
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::segment (pcl::PointIndices& inliers, pcl::ModelCoefficients& coefficients)
+{
+  inliers.indices.clear ();
+  coefficients.values.clear ();
+  if (!compute ())
+    return;
+  inliers.header = coefficients.header = input_->header;
+  if (planes_.empty ())
+  {
+    PCL_DEBUG ("[pcl::%s::segment] no plane found\n", getClassName ().c_str ());
+    return;
+  }
+  inliers = planes_.front ().indices;
+  coefficients = planes_.front ().coefficients;
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::getLabels (pcl::PointCloud<pcl::Label>& labels)
+{
+  labels.clear ();
+  if (!compute ())
+    return;
+  labels.resize (labels_.size ());
+  for (std::size_t i = 0; i < labels_.size (); ++i)
+    labels[i].label = labels_[i];
+  labels.width = input_->width;
+  labels.height = input_->height;
+  labels.is_dense = true;
+  labels.header = input_->header;
+}
+
+template <typename PointT, typename NormalT> pcl::PointCloud<pcl::PointXYZRGB>::Ptr
+RobustPlaneSegmentation<PointT, NormalT>::getColoredCloud ()
+{
+  if (!compute ())
+    return nullptr;
+  auto colored = std::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> ();
+  colored->resize (input_->size ());
+  for (std::size_t i = 0; i < input_->size (); ++i)
+  {
+    pcl::PointXYZRGB& q = (*colored)[i];
+    q.x = (*input_)[i].x;
+    q.y = (*input_)[i].y;
+    q.z = (*input_)[i].z;
+    const auto c = pcl::rspd::planeColor (labels_[i]);
+    q.r = c[0];
+    q.g = c[1];
+    q.b = c[2];
+  }
+  colored->width = input_->width;
+  colored->height = input_->height;
+  colored->is_dense = input_->is_dense;
+  colored->header = input_->header;
+  colored->sensor_origin_ = input_->sensor_origin_;
+  colored->sensor_orientation_ = input_->sensor_orientation_;
+  return colored;
+}
+
+template <typename PointT, typename NormalT> const std::vector<RobustPlane>&
+RobustPlaneSegmentation<PointT, NormalT>::getPlanes ()
+{
+  compute ();
+  return planes_;
+}
+
+} // namespace pcl
+

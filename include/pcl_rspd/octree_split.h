@@ -1,0 +1,37 @@
+/*
+ * pcl_rspd: the split phase (Sec. 3.1, Algorithm 1) over an index-range octree.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/point_set.h>
+
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief Split phase: detect planar patches bottom-up in an octree (Algorithm 1).
+  *
+  * The octree is built over one array of sample indices that is partitioned in place, so each node
+  * is a contiguous slice of it (pcl::octree only keeps indices in leaves and snaps its box to a
+  * power-of-two resolution, which suits neither a count-driven split nor the bottom-up test).
+  * The root cell is the bounding cube of the samples. A cell with fewer than ε samples returns;
+  * otherwise it is split into eight children and recursed into; only if none of its children
+  * produced a patch is the cell itself tested; an accepted cell drops its outliers and becomes a
+  * patch unless fewer than ε samples remain. Subdivision stops where all samples of a cell coincide
+  * or at params.max_octree_depth: such a cell is tested as a leaf.
+  *
+  * \param[in] points valid samples with normals
+  * \param[in] params constants (ε = params.min_patch_size)
+  * \param[out] stats cells tested and patches found are added (may be null)
+  * \return the patches, in depth-first octree order (deterministic)
+  */
+std::vector<PlanarPatch>
+splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr);
+
+} // namespace rspd
+} // namespace pcl

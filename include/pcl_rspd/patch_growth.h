@@ -1,0 +1,43 @@
+/*
+ * pcl_rspd: the growth phase (Sec. 3.3, Algorithm 2).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief Label of a sample that belongs to no patch. */
+constexpr std::uint32_t kNoPatch = std::numeric_limits<std::uint32_t>::max ();
+
+/** \brief Per-sample patch labels (position in \a patches, or kNoPatch) for the current members. */
+std::vector<std::uint32_t>
+labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches);
+
+/** \brief Grow every patch breadth-first over the k-NN graph (Algorithm 2).
+  *
+  * Patches grow one after the other by increasing MND (ties: lowest member index), so the least
+  * noisy ones get first pick. From every member, a graph neighbour that belongs to no patch joins
+  * when it meets the patch's inlier condition (d <= MDP, φ <= MND) and is then grown from; one that
+  * fails is marked as an outlier of that patch and not visited again by it.
+  * \param[in] points samples
+  * \param[in] graph directed k-NN graph (out-neighbours are visited)
+  * \param[in,out] patches members are appended (first_index kept up to date)
+  * \param[in,out] labels per-sample patch label, updated
+  * \return samples added
+  */
+std::size_t
+growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
+             std::vector<std::uint32_t>& labels);
+
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,359 @@
+/*
+ * pcl_rspd: robust statistics plane detection for unorganized point clouds, PCL-native.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/plane_detector.h>
+
+#include <pcl/ModelCoefficients.h>
+#include <pcl/PointIndices.h>
+#include <pcl/pcl_base.h>
+#include <pcl/pcl_macros.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl/search/search.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace pcl
+{
+/** \brief Everything known about one detected plane, in the input cloud's frame. */
+struct RobustPlane
+{
+  pcl::PointIndices indices;           ///< members, indices into the input cloud, ascending
+  pcl::ModelCoefficients coefficients; ///< [a b c d], unit normal towards the cloud's sensor origin
+  Eigen::Vector3d center = Eigen::Vector3d::Zero ();   ///< C: component-wise median of members' positions (Eq. 3)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ ();  ///< N, oriented as in coefficients
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero (); ///< mean of the members' positions
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero (); ///< covariance of the members' positions
+  double mdp = 0.0; ///< maximum distance to plane (input units)
+  double mnd = 0.0; ///< maximum normal deviation (radians)
+  /** \brief In-plane extent as an oriented rectangle: centre, two unit in-plane axes and the
+    * side lengths along them (rect_size[0] >= rect_size[1]). */
+  Eigen::Vector3d rect_center = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d rect_axes[2] = {Eigen::Vector3d::UnitX (), Eigen::Vector3d::UnitY ()};
+  Eigen::Vector2d rect_size = Eigen::Vector2d::Zero ();
+  /** \brief Boundary polygon: the convex hull of the members projected on the plane,
+    * counter-clockwise about the normal. */
+  std::vector<Eigen::Vector3d> hull;
+};
+
+/** \brief Finds every plane in an unorganized point cloud with robust statistics, without
+  * parameter tuning.
+  *
+  * Implements "A robust statistics approach for plane detection in unorganized point clouds" by
+  * A. M. C. Araújo and M. M. Oliveira, Pattern Recognition 100 (2020) 107115 (RSPD):
+  *  - split (Sec. 3.1): an octree over the valid samples is subdivided until a cell holds fewer than
+  *    ε samples; cells are tested bottom-up, a parent only when none of its children became a patch;
+  *  - robust planarity test (Sec. 3.2): plane (C, N) from component-wise medians; T1 compares
+  *    MDP = median(D) + α·MAD(D) with the cell's in-plane extent through the angle of
+  *    F = 0.5·max(w, l)·U + MDP·N with N (> 75°); T2 needs MND = median(Φ) + α·MAD(Φ) < 60°;
+  *    T3 rejects a cell with 25 % or more outliers, and an accepted patch drops its outliers;
+  *  - grow (Sec. 3.3): breadth-first on the k-NN graph (k = 50), patches by increasing MND;
+  *  - merge (Sec. 3.4): union-find over pairs that are adjacent (M1), have normals closer than the
+  *    larger MND (M2) and where a boundary sample of one is an inlier of the other (M3);
+  *  - iterate (Sec. 3.5): a patch that grew by more than 50 % is re-estimated and grow/merge repeat.
+  *
+  * Where the paper is silent or its letter fails on real data, these departures are made; each can
+  * be switched back to the paper's behaviour:
+  *  - zero spread: the interval half-widths have floors that scale with the data (1e-6 of the
+  *    patch's in-plane extent for distances, 1e-3 rad for normals), so a noise-free plane (MAD = 0,
+  *    the paper's Table 5) passes and grows (setDistanceFloorRatio(0), setNormalDeviationFloor(0));
+  *  - normal signs: unoriented normals are flipped into the hemisphere of the cell's dominant
+  *    direction (principal eigenvector of Σ nᵢnᵢᵀ) before the median of Eq. 4
+  *    (setAlignNormalsBeforeMedian(false));
+  *  - w and l of T1 are the extents along the two in-plane principal axes of the cell's samples,
+  *    never an axis-aligned box, so the test does not depend on the cloud's orientation;
+  *  - positions are centred in double precision before any statistic, so a scene far from the
+  *    origin gives the planes it gives at the origin.
+  *
+  * Without setInputNormals, normals are estimated by PCA over the same k-neighbourhoods that form
+  * the growth graph. Without setSearchMethod, the graph comes from the library's own exact k-NN
+  * (pcl::rspd::buildKnnGraph); any pcl::search::Search can be plugged in instead.
+  *
+  * The setters of pcl::SACSegmentation (setModelType, setMethodType, setDistanceThreshold,
+  * setMaxIterations, setProbability, setOptimizeCoefficients) are accepted so that a pipeline can
+  * swap classes by changing one declaration: only plane models are supported; the thresholds are
+  * ignored (the method estimates its own) and say so at PCL_DEBUG level.
+  *
+  * \ingroup segmentation
+  */
+template <typename PointT, typename NormalT = pcl::Normal>
+class RobustPlaneSegmentation : public pcl::PCLBase<PointT>
+{
+public:
+  using PointCloud = pcl::PointCloud<PointT>;
+  using PointCloudConstPtr = typename PointCloud::ConstPtr;
+  using Normals = pcl::PointCloud<NormalT>;
+  using NormalsConstPtr = typename Normals::ConstPtr;
+  using Search = pcl::search::Search<PointT>;
+  using SearchPtr = typename Search::Ptr;
+
+  using PCLBase<PointT>::input_;
+  using PCLBase<PointT>::indices_;
+  using PCLBase<PointT>::initCompute;
+  using PCLBase<PointT>::deinitCompute;
+
+  /** \brief Constructor with the paper's defaults. */
+  RobustPlaneSegmentation ();
+
+  ~RobustPlaneSegmentation () override = default;
+
+  /** \brief Set the input cloud (invalidates cached results). */
+  void
+  setInputCloud (const PointCloudConstPtr& cloud) override;
+
+  /** \brief Restrict the detection to these indices (invalidates cached results). */
+  void
+  setIndices (const IndicesPtr& indices) override;
+  /** \brief Restrict the detection to these indices (invalidates cached results). */
+  void
+  setIndices (const IndicesConstPtr& indices) override;
+  /** \brief Restrict the detection to these indices (invalidates cached results). */
+  void
+  setIndices (const PointIndicesConstPtr& indices) override;
+  /** \brief Restrict the detection to a block of an organized cloud (invalidates cached results). */
+  void
+  setIndices (std::size_t row_start, std::size_t col_start, std::size_t nb_rows, std::size_t nb_cols) override;
+
+  /** \brief Per-point normals, same size and order as the input cloud. Optional: without them,
+    * normals are estimated by PCA over the k-neighbourhoods of the growth graph. */
+  void
+  setInputNormals (const NormalsConstPtr& normals);
+  /** \brief The normals given with setInputNormals (null if none). */
+  NormalsConstPtr
+  getInputNormals () const { return normals_; }
+
+  /** \brief Search method for the k-NN graph (optional: the library's own exact k-NN otherwise). */
+  void
+  setSearchMethod (const SearchPtr& search);
+  /** \brief The search method given with setSearchMethod (null if none). */
+  SearchPtr
+  getSearchMethod () const { return search_; }
+
+  /** \brief k, the neighbours per sample of the graph and of normal estimation, not counting the
+    * sample itself (default 50, Sec. 3.3). */
+  void
+  setNumberOfNeighbours (int k);
+  /** \brief k, neighbours per sample. */
+  int
+  getNumberOfNeighbours () const { return k_; }
+
+  /** \brief ε as a fraction of the number n of valid samples: ε = max(10, ceil(ratio·n))
+    * (default 0.001, Sec. 3.1). */
+  void
+  setMinPatchSizeRatio (double ratio);
+  /** \brief ε as a fraction of the number of valid samples. */
+  double
+  getMinPatchSizeRatio () const { return min_patch_ratio_; }
+
+  /** \brief ε directly, in samples (>= 3); wins over the ratio. 0 returns to the ratio. */
+  void
+  setMinPatchSize (std::size_t min_size);
+  /** \brief ε set directly (0: derived from the ratio). */
+  std::size_t
+  getMinPatchSize () const { return min_patch_size_; }
+
+  /** \brief OpenMP threads (0, the default: what OpenMP gives, so OMP_NUM_THREADS is honoured).
+    * The output does not depend on it. */
+  void
+  setNumberOfThreads (unsigned int threads);
+  /** \brief OpenMP threads (0: OpenMP's default). */
+  unsigned int
+  getNumberOfThreads () const { return static_cast<unsigned int> (params_.num_threads); }
+
+  /** \brief T1: minimum angle between F and N, radians (default 75°). */
+  void
+  setMinDistanceTestAngle (double radians);
+  /** \brief T1 threshold, radians. */
+  double
+  getMinDistanceTestAngle () const { return params_.min_distance_angle; }
+
+  /** \brief T2: MND must stay below this, radians (default 60°). */
+  void
+  setMaxNormalDeviation (double radians);
+  /** \brief T2 threshold, radians. */
+  double
+  getMaxNormalDeviation () const { return params_.max_normal_deviation; }
+
+  /** \brief T3: share of outliers at which a cell is rejected, in (0, 1] (default 0.25). */
+  void
+  setMaxOutlierRatio (double ratio);
+  /** \brief T3 threshold. */
+  double
+  getMaxOutlierRatio () const { return params_.max_outlier_ratio; }
+
+  /** \brief α: half-width of the inlier intervals in MADs (default 3, Eqs. 6 and 9). */
+  void
+  setAlpha (double alpha);
+  /** \brief α, in MADs. */
+  double
+  getAlpha () const { return params_.alpha; }
+
+  /** \brief Floor of the distance interval's half-width as a fraction of the patch's in-plane
+    * extent (default 1e-6; 0 = the paper's letter). */
+  void
+  setDistanceFloorRatio (double ratio);
+  /** \brief Floor of the distance interval, fraction of the patch extent. */
+  double
+  getDistanceFloorRatio () const { return params_.distance_floor_ratio; }
+
+  /** \brief Floor of the normal-deviation interval's half-width, radians (default 1e-3; 0 = paper). */
+  void
+  setNormalDeviationFloor (double radians);
+  /** \brief Floor of the normal-deviation interval, radians. */
+  double
+  getNormalDeviationFloor () const { return params_.normal_deviation_floor; }
+
+  /** \brief Flip normals into the cell's dominant hemisphere before the median of Eq. 4
+    * (default true; false = the paper's plain component-wise median). */
+  void
+  setAlignNormalsBeforeMedian (bool align);
+  /** \brief Whether normals are aligned before the median of Eq. 4. */
+  bool
+  getAlignNormalsBeforeMedian () const { return params_.align_normals; }
+
+  /** \brief Safety cap on grow-merge iterations (default 100); reaching it is logged. */
+  void
+  setMaxGrowMergeIterations (int iterations);
+  /** \brief Cap on grow-merge iterations. */
+  int
+  getMaxGrowMergeIterations () const { return params_.max_iterations; }
+
+  /** \name SACSegmentation compatibility: plane models only, thresholds ignored. */
+  ///@{
+  /** \brief Only pcl::SACMODEL_PLANE (and its perpendicular/parallel/normal variants, treated as
+    * a plain plane) is accepted; other models make segment() fail with PCL_ERROR. */
+  void
+  setModelType (int model);
+  /** \brief Model type last set. */
+  int
+  getModelType () const { return model_type_; }
+  /** \brief Ignored: the method is deterministic (logged at PCL_DEBUG). */
+  void
+  setMethodType (int method);
+  /** \brief Method type last set (ignored). */
+  int
+  getMethodType () const { return method_type_; }
+  /** \brief Ignored: MDP is estimated per plane from the data (logged at PCL_DEBUG). */
+  void
+  setDistanceThreshold (double threshold);
+  /** \brief Distance threshold last set (ignored). */
+  double
+  getDistanceThreshold () const { return distance_threshold_; }
+  /** \brief Ignored: no random iterations (logged at PCL_DEBUG). See setMaxGrowMergeIterations. */
+  void
+  setMaxIterations (int iterations);
+  /** \brief Ignored: no random sampling (logged at PCL_DEBUG). */
+  void
+  setProbability (double probability);
+  /** \brief Ignored: coefficients always come from the robust estimate (logged at PCL_DEBUG). */
+  void
+  setOptimizeCoefficients (bool optimize);
+  ///@}
+
+  /** \brief Detect every plane.
+    * \param[out] coefficients per plane [a b c d], unit normal towards the cloud's sensor origin
+    * \param[out] indices per plane, indices into the input cloud (ascending)
+    * Planes come largest first (ties: lowest index). Each output carries the cloud's header.
+    * On failure both are cleared and PCL_ERROR says why.
+    */
+  void
+  segment (std::vector<pcl::ModelCoefficients>& coefficients, std::vector<pcl::PointIndices>& indices);
+
+  /** \brief The largest plane only, as pcl::SACSegmentation::segment gives it. */
+  void
+  segment (pcl::PointIndices& inliers, pcl::ModelCoefficients& coefficients);
+
+  /** \brief Per-point labels, same size and order as the input (0 = no plane, i = i-th plane of
+    * segment()). Runs the detection if needed; empty on failure. */
+  void
+  getLabels (pcl::PointCloud<pcl::Label>& labels);
+
+  /** \brief The input's positions coloured by plane (grey for none), for viewing. Null on failure. */
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr
+  getColoredCloud ();
+
+  /** \brief Every plane with its statistics, rectangle and hull. Runs the detection if needed. */
+  const std::vector<RobustPlane>&
+  getPlanes ();
+
+  /** \brief Normals used for the last detection, one per valid sample, as unit vectors in the
+    * order of getValidIndices(). */
+  const std::vector<Eigen::Vector3f>&
+  getUsedNormals () const { return points_.normals; }
+
+  /** \brief Indices of the valid samples (finite, within the indices) of the last detection. */
+  const std::vector<pcl::index_t>&
+  getValidIndices () const { return points_.input_indices; }
+
+  /** \brief ε of the last detection (resolved from the ratio or set directly). */
+  std::size_t
+  getResolvedMinPatchSize () const { return params_.min_patch_size; }
+
+  /** \brief Counters of the last detection. */
+  const pcl::rspd::DetectorStatistics&
+  getStatistics () const { return stats_; }
+
+  /** \brief Whether the last detection succeeded. */
+  bool
+  hasResult () const { return computed_ && ok_; }
+
+protected:
+  /** \brief Class name for messages. */
+  std::string
+  getClassName () const { return "RobustPlaneSegmentation"; }
+
+  /** \brief Run the detection unless a cached result is valid. \return success */
+  bool
+  compute ();
+
+  /** \brief Validate inputs and fill points_ with valid, centred samples. */
+  bool
+  prepareSamples ();
+
+  /** \brief Build graph_ (with search_ if set) and, if no normals were given, estimate them. */
+  bool
+  prepareNeighbourhoods ();
+
+  /** \brief Convert the detector's patches into planes_ and labels_. */
+  void
+  buildPlanes (const std::vector<pcl::rspd::DetectedPatch>& patches);
+
+  /** \brief Forget cached results. */
+  void
+  invalidate () { computed_ = false; }
+
+  NormalsConstPtr normals_;
+  SearchPtr search_;
+  int k_ = 50;
+  double min_patch_ratio_ = 0.001;
+  std::size_t min_patch_size_ = 0;
+  pcl::rspd::DetectorParameters params_;
+
+  int model_type_;
+  int method_type_;
+  double distance_threshold_ = 0.0;
+
+  // Cached state of the last detection.
+  bool computed_ = false;
+  bool ok_ = false;
+  pcl::rspd::PointSet points_;
+  pcl::rspd::NeighborGraph graph_;
+  pcl::rspd::DetectorStatistics stats_;
+  std::vector<RobustPlane> planes_;
+  std::vector<std::uint32_t> labels_;
+
+public:
+  PCL_MAKE_ALIGNED_OPERATOR_NEW
+};
+} // namespace pcl
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_rspd/impl/robust_plane_segmentation.hpp>
+#endif

@@ -1,0 +1,59 @@
+/*
+ * pcl_rspd: PCA normals over the growth graph's k-neighbourhoods.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/normal_estimation.h>
+
+#include <pcl/common/eigen.h>
+
+#include <omp.h>
+
+#include <cmath>
+
+namespace pcl
+{
+namespace rspd
+{
+int
+resolveThreads (int requested)
+{
+  return requested > 0 ? requested : std::max (1, omp_get_max_threads ());
+}
+
+void
+estimateNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
+                 std::vector<Eigen::Vector3f>& normals)
+{
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (points.size ());
+  normals.assign (points.size (), Eigen::Vector3f::UnitZ ());
+  const int k = graph.k ();
+#pragma omp parallel for schedule(static, 4096) num_threads(resolveThreads (num_threads))
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+  {
+    // Covariance about the neighbourhood's mean, relative to the sample to keep precision.
+    const Eigen::Vector3d origin = points[i].cast<double> ();
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+    Eigen::Matrix3d sq = Eigen::Matrix3d::Zero ();
+    const std::uint32_t* nbrs = graph.neighbors (i);
+    for (int j = 0; j < k; ++j)
+    {
+      const Eigen::Vector3d d = points[nbrs[j]].cast<double> () - origin;
+      sum += d;
+      sq += d * d.transpose ();
+    }
+    const double m = static_cast<double> (k + 1); // the sample itself contributes d = 0
+    const Eigen::Vector3d mean = sum / m;
+    const Eigen::Matrix3d cov = sq / m - mean * mean.transpose ();
+    if (!(cov.cwiseAbs ().maxCoeff () > 0.0))
+      continue; // all coincide
+    double eigen_value;
+    Eigen::Vector3d eigen_vector;
+    pcl::eigen33 (cov, eigen_value, eigen_vector);
+    const double norm = eigen_vector.norm ();
+    if (norm > 0.0 && std::isfinite (norm))
+      normals[i] = (eigen_vector / norm).cast<float> ();
+  }
+}
+
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,142 @@
+/*
+ * pcl_rspd: the split phase (Sec. 3.1, Algorithm 1).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/octree_split.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <numeric>
+
+namespace pcl
+{
+namespace rspd
+{
+namespace
+{
+class OctreeSplitter
+{
+public:
+  OctreeSplitter (const PointSet& points, const DetectorParameters& params)
+    : points_ (points), params_ (params), order_ (points.size ())
+  {
+    std::iota (order_.begin (), order_.end (), 0u);
+  }
+
+  /** Algorithm 1 on the slice [begin, end) of order_, cell of corner lo and edge size.
+    * Patches found are appended to out in depth-first order. */
+  bool
+  detect (std::size_t begin, std::size_t end, const Eigen::Vector3d& lo, double size, int depth,
+          std::vector<PlanarPatch>& out)
+  {
+    if (end - begin < params_.min_patch_size)
+      return false;
+
+    bool has_planar_patch = false;
+    if (depth < params_.max_octree_depth && !allCoincide (begin, end))
+    {
+      const Eigen::Vector3d mid = lo + Eigen::Vector3d::Constant (0.5 * size);
+      std::array<std::size_t, 9> bounds;
+      partition (begin, end, mid, bounds);
+      for (int c = 0; c < 8; ++c)
+      {
+        const Eigen::Vector3d child_lo (c & 1 ? mid.x () : lo.x (), c & 2 ? mid.y () : lo.y (),
+                                        c & 4 ? mid.z () : lo.z ());
+        if (detect (bounds[c], bounds[c + 1], child_lo, 0.5 * size, depth + 1, out))
+          has_planar_patch = true;
+      }
+    }
+    if (has_planar_patch)
+      return true;
+
+    // No child became a patch: test the cell itself (every level, the root included).
+    const std::vector<std::uint32_t> samples (order_.begin () + begin, order_.begin () + end);
+    PlanarityResult r = robustPlanarityTest (points_, samples, params_);
+    ++cells_tested_;
+    if (r.verdict != PlanarityVerdict::Planar)
+      return false;
+    PlanarPatch patch;
+    patch.members = std::move (r.inliers);
+    std::sort (patch.members.begin (), patch.members.end ());
+    patch.first_index = patch.members.front ();
+    patch.setEstimate (r.estimate);
+    out.push_back (std::move (patch));
+    return true;
+  }
+
+  /** Bounding cube of all samples: corner and edge. */
+  void
+  rootCell (Eigen::Vector3d& lo, double& size) const
+  {
+    Eigen::Vector3d mn = Eigen::Vector3d::Constant (HUGE_VAL), mx = Eigen::Vector3d::Constant (-HUGE_VAL);
+    for (const auto& p : points_.points)
+    {
+      mn = mn.cwiseMin (p.cast<double> ());
+      mx = mx.cwiseMax (p.cast<double> ());
+    }
+    size = (mx - mn).maxCoeff ();
+    // A cube (octree cells stay cubes), centred on the box.
+    lo = 0.5 * (mn + mx) - Eigen::Vector3d::Constant (0.5 * size);
+  }
+
+  std::size_t cells_tested_ = 0;
+
+private:
+  bool
+  allCoincide (std::size_t begin, std::size_t end) const
+  {
+    const Eigen::Vector3f& first = points_.points[order_[begin]];
+    for (std::size_t i = begin + 1; i < end; ++i)
+      if (points_.points[order_[i]] != first)
+        return false;
+    return true;
+  }
+
+  /** Partition [begin, end) into the eight children of a cell split at mid; child c holds the
+    * samples with (x >= mid.x) == bit 0, (y >= mid.y) == bit 1, (z >= mid.z) == bit 2. */
+  void
+  partition (std::size_t begin, std::size_t end, const Eigen::Vector3d& mid, std::array<std::size_t, 9>& bounds)
+  {
+    auto split = [this] (std::size_t b, std::size_t e, int axis, double value) {
+      auto it = std::partition (order_.begin () + b, order_.begin () + e, [&] (std::uint32_t i) {
+        return static_cast<double> (points_.points[i][axis]) < value;
+      });
+      return static_cast<std::size_t> (it - order_.begin ());
+    };
+    bounds[0] = begin;
+    bounds[8] = end;
+    bounds[4] = split (begin, end, 2, mid.z ());
+    bounds[2] = split (begin, bounds[4], 1, mid.y ());
+    bounds[6] = split (bounds[4], end, 1, mid.y ());
+    for (int c = 0; c < 8; c += 2)
+      bounds[c + 1] = split (bounds[c], bounds[c + 2], 0, mid.x ());
+  }
+
+  const PointSet& points_;
+  const DetectorParameters& params_;
+  std::vector<std::uint32_t> order_;
+};
+} // namespace
+
+std::vector<PlanarPatch>
+splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats)
+{
+  std::vector<PlanarPatch> patches;
+  if (points.size () == 0)
+    return patches;
+  OctreeSplitter splitter (points, params);
+  Eigen::Vector3d lo;
+  double size;
+  splitter.rootCell (lo, size);
+  splitter.detect (0, points.size (), lo, size, 0, patches);
+  if (stats)
+  {
+    stats->cells_tested += splitter.cells_tested_;
+    stats->seed_patches += patches.size ();
+  }
+  return patches;
+}
+
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,71 @@
+/*
+ * pcl_rspd: the growth phase (Sec. 3.3, Algorithm 2).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/patch_growth.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace pcl
+{
+namespace rspd
+{
+std::vector<std::uint32_t>
+labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches)
+{
+  std::vector<std::uint32_t> labels (num_samples, kNoPatch);
+  for (std::size_t p = 0; p < patches.size (); ++p)
+    for (const auto s : patches[p].members)
+      labels[s] = static_cast<std::uint32_t> (p);
+  return labels;
+}
+
+std::size_t
+growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
+             std::vector<std::uint32_t>& labels)
+{
+  std::vector<std::size_t> order (patches.size ());
+  std::iota (order.begin (), order.end (), 0);
+  std::sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) {
+    if (patches[a].mnd != patches[b].mnd)
+      return patches[a].mnd < patches[b].mnd;
+    return patches[a].first_index < patches[b].first_index;
+  });
+
+  // The per-patch "outliers" set of Algorithm 2 as a stamp per sample: a sample rejected by the
+  // patch grown in turn t carries stamp t + 1, so no set needs clearing between patches.
+  std::vector<std::uint32_t> rejected_by (points.size (), 0);
+  std::size_t added = 0;
+  const int k = graph.k ();
+  std::uint32_t stamp = 0;
+  for (const auto p : order)
+  {
+    PlanarPatch& patch = patches[p];
+    ++stamp;
+    // The queue is the member list itself: members are popped in order and new ones appended.
+    for (std::size_t head = 0; head < patch.members.size (); ++head)
+    {
+      const std::uint32_t* nbrs = graph.neighbors (patch.members[head]);
+      for (int j = 0; j < k; ++j)
+      {
+        const std::uint32_t n = nbrs[j];
+        if (labels[n] != kNoPatch || rejected_by[n] == stamp)
+          continue;
+        if (patch.isInlier (points.points[n], points.normals[n]))
+        {
+          labels[n] = static_cast<std::uint32_t> (p);
+          patch.members.push_back (n);
+          patch.first_index = std::min (patch.first_index, n);
+          ++added;
+        }
+        else
+          rejected_by[n] = stamp;
+      }
+    }
+  }
+  return added;
+}
+
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,95 @@
+/*
+ * pcl_rspd: the pipeline of Sec. 3 — split, then grow and merge until every patch is stable.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/octree_split.h>
+#include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/patch_merge.h>
+#include <pcl_rspd/plane_detector.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+
+namespace pcl
+{
+namespace rspd
+{
+namespace
+{
+/** Sec. 3.5: re-estimate C, N, MDP and MND of every patch that grew by more than the update ratio
+  * since its last estimate. Members are kept; T1-T3 are not re-run. \return patches updated */
+std::size_t
+reestimateGrownPatches (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+{
+  std::size_t updated = 0;
+  for (auto& patch : patches)
+  {
+    const double limit = (1.0 + params.update_growth_ratio) * static_cast<double> (patch.estimate_size);
+    if (!(static_cast<double> (patch.members.size ()) > limit))
+      continue;
+    PlaneEstimate estimate;
+    if (estimatePlane (points, patch.members, params, estimate))
+      patch.setEstimate (estimate);
+    else
+      patch.estimate_size = patch.members.size (); // keep the old plane; do not retry forever
+    ++updated;
+  }
+  return updated;
+}
+} // namespace
+
+void
+detectPlanes (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+              std::vector<DetectedPatch>& result, DetectorStatistics* stats)
+{
+  result.clear ();
+  DetectorStatistics local;
+  DetectorStatistics& st = stats ? *stats : local;
+  st = DetectorStatistics ();
+
+  // Split (Sec. 3.1).
+  std::vector<PlanarPatch> patches = splitPhase (points, params, &st);
+  std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
+
+  // Grow and merge until no patch needs an update (Sec. 3.3-3.5).
+  for (;;)
+  {
+    if (st.iterations >= params.max_iterations)
+    {
+      st.hit_iteration_cap = true;
+      PCL_WARN ("[pcl::rspd::detectPlanes] stopped after %d grow-merge iterations with patches still "
+                "unstable\n", st.iterations);
+      break;
+    }
+    ++st.iterations;
+    growPatches (points, graph, patches, labels);
+    st.merges += mergePatches (points, graph, patches, labels);
+    const std::size_t updated = reestimateGrownPatches (points, params, patches);
+    st.reestimations += updated;
+    if (updated == 0)
+      break;
+  }
+
+  // Largest first, ties by lowest member index.
+  std::sort (patches.begin (), patches.end (), [] (const PlanarPatch& a, const PlanarPatch& b) {
+    if (a.members.size () != b.members.size ())
+      return a.members.size () > b.members.size ();
+    return a.first_index < b.first_index;
+  });
+  result.reserve (patches.size ());
+  for (auto& p : patches)
+  {
+    DetectedPatch d;
+    d.members = std::move (p.members);
+    std::sort (d.members.begin (), d.members.end ());
+    d.center = p.center;
+    d.normal = p.normal;
+    d.mdp = p.mdp;
+    d.mnd = p.mnd;
+    result.push_back (std::move (d));
+  }
+}
+
+} // namespace rspd
+} // namespace pcl
