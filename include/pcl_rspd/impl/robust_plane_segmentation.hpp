@@ -529,38 +529,60 @@ RobustPlaneSegmentation<PointT, NormalT>::buildPlanes (const std::vector<pcl::rs
     plane.covariance = cov / static_cast<double> (patch.members.size ());
     plane.centroid = mean + points_.offset;
 
-    // Oriented rectangle and convex hull of the members projected on the plane, in a basis
-    // (u, v, normal) that is right-handed so the hull runs counter-clockwise about the normal.
+    // Convex hull of the members projected on the plane, in a basis (u, v, normal) that is
+    // right-handed so the hull runs counter-clockwise about the normal; then the minimum-area
+    // rectangle, which has a side on a hull edge (PCA axes are undefined for a square).
     const Eigen::Vector3d u0 = plane.normal.unitOrthogonal ();
     const Eigen::Vector3d v0 = plane.normal.cross (u0);
     std::vector<Eigen::Vector2d> flat;
     flat.reserve (patch.members.size ());
-    Eigen::Vector2d fmean = Eigen::Vector2d::Zero ();
     for (const auto s : patch.members)
     {
       const Eigen::Vector3d d = points_.points[s].template cast<double> () - patch.center;
       flat.emplace_back (d.dot (u0), d.dot (v0));
-      fmean += flat.back ();
     }
-    fmean /= static_cast<double> (flat.size ());
-    Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero ();
-    for (const auto& q : flat)
-      scatter += (q - fmean) * (q - fmean).transpose ();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver (scatter);
-    const Eigen::Vector2d a1 = solver.eigenvectors ().col (1), a2 = solver.eigenvectors ().col (0);
-    double lo1 = HUGE_VAL, hi1 = -HUGE_VAL, lo2 = HUGE_VAL, hi2 = -HUGE_VAL;
-    for (const auto& q : flat)
-    {
-      lo1 = std::min (lo1, q.dot (a1)); hi1 = std::max (hi1, q.dot (a1));
-      lo2 = std::min (lo2, q.dot (a2)); hi2 = std::max (hi2, q.dot (a2));
-    }
-    plane.rect_axes[0] = (a1.x () * u0 + a1.y () * v0).normalized ();
-    plane.rect_axes[1] = plane.normal.cross (plane.rect_axes[0]);
-    plane.rect_size = Eigen::Vector2d (hi1 - lo1, hi2 - lo2);
-    const double sign2 = plane.rect_axes[1].dot (a2.x () * u0 + a2.y () * v0) < 0.0 ? -1.0 : 1.0;
-    plane.rect_center = plane.center + 0.5 * (lo1 + hi1) * plane.rect_axes[0] + sign2 * 0.5 * (lo2 + hi2) * plane.rect_axes[1];
-    for (const auto& q : pcl::rspd::detail::convexHull2D (std::move (flat)))
+    const std::vector<Eigen::Vector2d> hull = pcl::rspd::detail::convexHull2D (std::move (flat));
+    for (const auto& q : hull)
       plane.hull.push_back (plane.center + q.x () * u0 + q.y () * v0);
+    double best_area = HUGE_VAL;
+    Eigen::Vector2d best_axis (1.0, 0.0), best_lo (0.0, 0.0), best_hi (0.0, 0.0);
+    for (std::size_t e = 0; e < hull.size (); ++e)
+    {
+      const Eigen::Vector2d edge = hull[(e + 1) % hull.size ()] - hull[e];
+      if (!(edge.norm () > 0.0))
+        continue;
+      const Eigen::Vector2d a = edge.normalized (), b (-a.y (), a.x ());
+      Eigen::Vector2d lo (HUGE_VAL, HUGE_VAL), hi (-HUGE_VAL, -HUGE_VAL);
+      for (const auto& q : hull)
+      {
+        const Eigen::Vector2d t (q.dot (a), q.dot (b));
+        lo = lo.cwiseMin (t);
+        hi = hi.cwiseMax (t);
+      }
+      const double area = (hi - lo).prod ();
+      if (area < best_area)
+      {
+        best_area = area;
+        best_axis = a;
+        best_lo = lo;
+        best_hi = hi;
+      }
+    }
+    Eigen::Vector2d a = best_axis, b (-a.y (), a.x ());
+    Eigen::Vector2d size = best_hi - best_lo, mid = 0.5 * (best_lo + best_hi);
+    if (size.y () > size.x ()) // longer side first
+    {
+      std::swap (size.x (), size.y ());
+      const Eigen::Vector2d a_old = a;
+      a = b;
+      b = -a_old;
+      mid = Eigen::Vector2d (mid.y (), -mid.x ());
+    }
+    const Eigen::Vector2d c2 = mid.x () * a + mid.y () * b;
+    plane.rect_axes[0] = a.x () * u0 + a.y () * v0;
+    plane.rect_axes[1] = plane.normal.cross (plane.rect_axes[0]);
+    plane.rect_size = size;
+    plane.rect_center = plane.center + c2.x () * u0 + c2.y () * v0;
     planes_.push_back (std::move (plane));
   }
 }

@@ -1,0 +1,58 @@
+/*
+ * pcl_rspd tests: small builders shared by the unit tests.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/point_set.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace rspd_test
+{
+/** Exact k-NN graph by brute force (reference for small sets; ties by index). */
+inline pcl::rspd::NeighborGraph
+bruteForceGraph (const std::vector<Eigen::Vector3f>& pts, int k)
+{
+  pcl::rspd::NeighborGraph g (pts.size (), k);
+  std::vector<std::pair<float, std::uint32_t>> d (pts.size ());
+  for (std::size_t i = 0; i < pts.size (); ++i)
+  {
+    for (std::size_t j = 0; j < pts.size (); ++j)
+      d[j] = {j == i ? INFINITY : (pts[i] - pts[j]).squaredNorm (), static_cast<std::uint32_t> (j)};
+    std::partial_sort (d.begin (), d.begin () + k, d.end ());
+    for (int j = 0; j < k; ++j)
+      g.row (i)[j] = d[j].second;
+  }
+  return g;
+}
+
+/** Append a grid-sampled rectangle to \a set: origin o, edge vectors a and b, nu x nv samples,
+  * exact normal a x b, optional Gaussian noise along the normal. Returns the indices added. */
+inline std::vector<std::uint32_t>
+addRectangle (pcl::rspd::PointSet& set, const Eigen::Vector3f& o, const Eigen::Vector3f& a, const Eigen::Vector3f& b,
+              int nu, int nv, float noise = 0.0f, std::uint32_t seed = 1)
+{
+  std::mt19937 rng (seed);
+  std::normal_distribution<float> g (0.0f, 1.0f);
+  const Eigen::Vector3f n = a.cross (b).normalized ();
+  std::vector<std::uint32_t> added;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+    {
+      const float s = (i + 0.5f) / nu, t = (j + 0.5f) / nv;
+      added.push_back (static_cast<std::uint32_t> (set.points.size ()));
+      set.points.push_back (o + s * a + t * b + (noise > 0 ? noise * g (rng) : 0.0f) * n);
+      set.normals.push_back (n);
+      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
+    }
+  return added;
+}
+} // namespace rspd_test

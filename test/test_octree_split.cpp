@@ -1,0 +1,156 @@
+/*
+ * Tests of the split phase (Sec. 3.1, Algorithm 1), including the paper's Fig. 3.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/octree_split.h>
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <set>
+
+using namespace pcl::rspd;
+
+namespace
+{
+DetectorParameters
+params (std::size_t eps)
+{
+  DetectorParameters p;
+  p.min_patch_size = eps;
+  return p;
+}
+} // namespace
+
+TEST (OctreeSplit, BottomUpFindsSmallParallelPlanesThatTopDownMisses)
+{
+  // Fig. 3: a 1 x 1 floor with a 0.25 x 0.25 platform 1 cm above it, σ = 1 mm. Tested as one
+  // cell (what a top-down split does first), the platform is just 6 % outliers of one plane.
+  PointSet s;
+  const auto floor = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 150, 150, 0.001f, 1);
+  PointSet with_platform;
+  std::vector<bool> on_platform;
+  for (const auto i : floor)
+  {
+    const Eigen::Vector3f& p = s.points[i];
+    const bool raised = p.x () > 0.5f && p.x () < 0.75f && p.y () > 0.5f && p.y () < 0.75f;
+    with_platform.points.push_back (p + Eigen::Vector3f (0, 0, raised ? 0.01f : 0.0f));
+    with_platform.normals.push_back (s.normals[i]);
+    with_platform.input_indices.push_back (static_cast<pcl::index_t> (i));
+    on_platform.push_back (raised);
+  }
+  std::vector<std::uint32_t> all (with_platform.size ());
+  std::iota (all.begin (), all.end (), 0u);
+  const DetectorParameters prm = params (23); // ε = max(10, ceil(0.001 n))
+
+  const PlanarityResult top_down = robustPlanarityTest (with_platform, all, prm);
+  ASSERT_EQ (top_down.verdict, PlanarityVerdict::Planar);
+  std::size_t platform_kept = 0;
+  for (const auto i : top_down.inliers)
+    platform_kept += on_platform[i];
+  EXPECT_EQ (platform_kept, 0u) << "top-down: the platform is absorbed as outliers of the floor";
+
+  DetectorStatistics stats;
+  const std::vector<PlanarPatch> patches = splitPhase (with_platform, prm, &stats);
+  std::size_t platform_patches = 0, mixed = 0, platform_members = 0;
+  for (const auto& patch : patches)
+  {
+    std::size_t up = 0;
+    for (const auto i : patch.members)
+      up += on_platform[i];
+    if (up == patch.members.size ())
+    {
+      ++platform_patches;
+      platform_members += up;
+    }
+    else if (up > 0)
+      ++mixed;
+  }
+  EXPECT_GT (platform_patches, 0u) << "bottom-up: the platform gets patches of its own";
+  EXPECT_EQ (mixed, 0u) << "no patch mixes platform and floor";
+  EXPECT_GT (platform_members, 300u) << "of ~1,400 platform samples (growth takes the rest)";
+}
+
+TEST (OctreeSplit, EveryPatchHoldsAtLeastEpsilonSamplesAndNoSampleTwice)
+{
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 100, 100, 0.002f, 2);
+  rspd_test::addRectangle (s, {0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 100, 100, 0.002f, 3);
+  const std::vector<PlanarPatch> patches = splitPhase (s, params (20));
+  ASSERT_FALSE (patches.empty ());
+  std::set<std::uint32_t> seen;
+  for (const auto& p : patches)
+  {
+    EXPECT_GE (p.members.size (), 20u);
+    EXPECT_TRUE (std::is_sorted (p.members.begin (), p.members.end ()));
+    EXPECT_EQ (p.first_index, p.members.front ());
+    EXPECT_EQ (p.estimate_size, p.members.size ());
+    for (const auto i : p.members)
+      EXPECT_TRUE (seen.insert (i).second);
+  }
+}
+
+TEST (OctreeSplit, CellsBelowEpsilonAreNotTested)
+{
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 5, 5);
+  DetectorStatistics stats;
+  EXPECT_TRUE (splitPhase (s, params (26), &stats).empty ());
+  EXPECT_EQ (stats.cells_tested, 0u);
+}
+
+TEST (OctreeSplit, RootIsTestedWhenNoChildCanBe)
+{
+  // 40 samples, ε = 40: every child has fewer than ε, so the root itself is tested and accepted.
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 8, 5);
+  DetectorStatistics stats;
+  const auto patches = splitPhase (s, params (40), &stats);
+  EXPECT_EQ (stats.cells_tested, 1u);
+  ASSERT_EQ (patches.size (), 1u);
+  EXPECT_EQ (patches[0].members.size (), 40u);
+}
+
+TEST (OctreeSplit, IdenticalPointsStopSubdivision)
+{
+  // More than ε coincident samples sent a peer into unbounded recursion.
+  PointSet s;
+  for (int i = 0; i < 10000; ++i)
+  {
+    s.points.emplace_back (0.5f, 0.5f, 0.5f);
+    s.normals.emplace_back (0.0f, 0.0f, 1.0f);
+  }
+  s.input_indices.resize (s.size ());
+  DetectorStatistics stats;
+  EXPECT_TRUE (splitPhase (s, params (10), &stats).empty ());
+  EXPECT_EQ (stats.cells_tested, 1u);
+}
+
+TEST (OctreeSplit, DepthCapBoundsATightClusterInsideALargeScene)
+{
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20);
+  for (int i = 0; i < 100; ++i) // a cluster a few float ulps wide
+  {
+    s.points.emplace_back (0.3f + i * 1e-7f, 0.3f, 0.0f);
+    s.normals.emplace_back (0.0f, 0.0f, 1.0f);
+  }
+  s.input_indices.resize (s.size ());
+  DetectorParameters p = params (10);
+  p.max_octree_depth = 24;
+  const auto patches = splitPhase (s, p); // terminates
+  SUCCEED () << patches.size () << " patches";
+}
+
+TEST (OctreeSplit, DeterministicOrder)
+{
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 60, 60, 0.003f, 5);
+  const auto a = splitPhase (s, params (10));
+  const auto b = splitPhase (s, params (10));
+  ASSERT_EQ (a.size (), b.size ());
+  for (std::size_t i = 0; i < a.size (); ++i)
+    EXPECT_EQ (a[i].members, b[i].members);
+}

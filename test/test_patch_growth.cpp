@@ -1,0 +1,130 @@
+/*
+ * Tests of the growth phase (Sec. 3.3, Algorithm 2) and of re-estimation after growth (Sec. 3.5).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/plane_detector.h>
+
+#include <gtest/gtest.h>
+
+using namespace pcl::rspd;
+
+namespace
+{
+PlanarPatch
+seedPatch (const std::vector<std::uint32_t>& members, const Eigen::Vector3d& c, const Eigen::Vector3d& n, double mdp,
+           double mnd)
+{
+  PlanarPatch p;
+  p.members = members;
+  p.first_index = *std::min_element (members.begin (), members.end ());
+  PlaneEstimate e;
+  e.center = c;
+  e.normal = n;
+  e.distance_halfwidth = mdp;
+  e.angle_halfwidth = mnd;
+  p.setEstimate (e);
+  return p;
+}
+} // namespace
+
+TEST (PatchGrowth, GrowsOverTheConnectedPlaneAndStopsAtAStep)
+{
+  // A floor, and a second floor 5 cm higher next to it: a seed in the first grows over it only.
+  PointSet s;
+  const auto low = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 30, 30);
+  const auto high = rspd_test::addRectangle (s, {1.02f, 0, 0.05f}, {1, 0, 0}, {0, 1, 0}, 30, 30);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 10);
+  std::vector<PlanarPatch> patches{seedPatch ({low[0], low[1], low[30]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.05)};
+  auto labels = labelSamples (s.size (), patches);
+  const std::size_t added = growPatches (s, g, patches, labels);
+  EXPECT_EQ (added, low.size () - 3);
+  EXPECT_EQ (patches[0].members.size (), low.size ());
+  for (const auto i : high)
+    EXPECT_EQ (labels[i], kNoPatch);
+  EXPECT_EQ (patches[0].first_index, 0u);
+}
+
+TEST (PatchGrowth, NormalDeviationLimitsGrowth)
+{
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20);
+  for (std::size_t i = 0; i < s.size (); ++i)
+    if (s.points[i].x () > 0.5f)
+      s.normals[i] = Eigen::Vector3f (0.3f, 0.0f, 1.0f).normalized (); // 16.7° off
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<PlanarPatch> patches{seedPatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 10.0 * M_PI / 180.0)};
+  auto labels = labelSamples (s.size (), patches);
+  growPatches (s, g, patches, labels);
+  for (std::size_t i = 0; i < s.size (); ++i)
+    EXPECT_EQ (labels[i] == 0, s.points[i].x () < 0.5f) << i;
+}
+
+TEST (PatchGrowth, LeastNoisyPatchGrowsFirst)
+{
+  // Two seeds on the same plane: the one with the lower MND grows first and takes everything.
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<PlanarPatch> patches{seedPatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.2),
+                                   seedPatch ({a[399]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+  auto labels = labelSamples (s.size (), patches);
+  growPatches (s, g, patches, labels);
+  EXPECT_EQ (patches[1].members.size (), 399u);
+  EXPECT_EQ (patches[0].members.size (), 1u);
+}
+
+TEST (PatchGrowth, NeverTakesSamplesOfAnotherPatch)
+{
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<std::uint32_t> right;
+  for (std::size_t i = 0; i < s.size (); ++i)
+    if (s.points[i].x () > 0.5f)
+      right.push_back (static_cast<std::uint32_t> (i));
+  std::vector<PlanarPatch> patches{seedPatch (right, {0, 0, 0}, {0, 0, 1}, 0.01, 0.5),
+                                   seedPatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+  auto labels = labelSamples (s.size (), patches);
+  growPatches (s, g, patches, labels);
+  EXPECT_EQ (patches[0].members.size (), right.size ());
+  EXPECT_EQ (patches[1].members.size (), 400u - right.size ());
+}
+
+TEST (Reestimation, PatchGrownByMoreThanHalfIsReestimated)
+{
+  // A noisy square: the split gives small patches whose growth triggers Sec. 3.5 updates.
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 100, 100, 0.004f, 9);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 20);
+  DetectorParameters p;
+  p.min_patch_size = 10;
+  std::vector<DetectedPatch> out;
+  DetectorStatistics stats;
+  detectPlanes (s, g, p, out, &stats);
+  EXPECT_GT (stats.reestimations, 0u);
+  ASSERT_FALSE (out.empty ());
+  EXPECT_GT (out[0].members.size (), 9000u);
+  // After re-estimation from ~10,000 members, MDP reflects the noise (σ = 4 mm: ~3σ-ish).
+  EXPECT_GT (out[0].mdp, 0.004);
+  EXPECT_LT (out[0].mdp, 0.03);
+  EXPECT_LE (stats.iterations, 100);
+  EXPECT_FALSE (stats.hit_iteration_cap);
+}
+
+TEST (Reestimation, IterationCapIsHonouredAndReported)
+{
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 60, 60, 0.004f, 9);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 20);
+  DetectorParameters p;
+  p.min_patch_size = 10;
+  p.max_iterations = 1;
+  std::vector<DetectedPatch> out;
+  DetectorStatistics stats;
+  detectPlanes (s, g, p, out, &stats);
+  EXPECT_EQ (stats.iterations, 1);
+  EXPECT_TRUE (stats.hit_iteration_cap);
+}

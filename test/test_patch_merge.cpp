@@ -1,0 +1,110 @@
+/*
+ * Tests of the merge phase (Sec. 3.4): M1, M2, M3 on a scene like the paper's Fig. 5.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/patch_merge.h>
+
+#include <gtest/gtest.h>
+
+using namespace pcl::rspd;
+
+namespace
+{
+PlanarPatch
+patchOf (const std::vector<std::uint32_t>& members, const Eigen::Vector3d& c, const Eigen::Vector3d& n, double mdp,
+         double mnd)
+{
+  PlanarPatch p;
+  p.members = members;
+  p.first_index = *std::min_element (members.begin (), members.end ());
+  PlaneEstimate e;
+  e.center = c;
+  e.normal = n;
+  e.distance_halfwidth = mdp;
+  e.angle_halfwidth = mnd;
+  p.setEstimate (e);
+  return p;
+}
+} // namespace
+
+TEST (UnionFind, JoinsTransitivelyAndIndependentlyOfOrder)
+{
+  UnionFind a (5), b (5);
+  a.unite (0, 1); a.unite (3, 4); a.unite (1, 4);
+  b.unite (4, 1); b.unite (4, 3); b.unite (1, 0);
+  for (std::uint32_t i = 0; i < 5; ++i)
+    EXPECT_EQ (a.find (i), b.find (i));
+  EXPECT_EQ (a.find (3), a.find (0));
+  EXPECT_NE (a.find (2), a.find (0));
+  EXPECT_FALSE (a.unite (0, 4));
+}
+
+TEST (PatchMerge, FigureFiveConditions)
+{
+  // A: vertical wall x = 0 (normal x). B: floor strip next to it (normal z), adjacent to A.
+  // C: floor strip next to B, 5 cm higher (parallel to B, adjacent, but no sample within MDP).
+  // D: floor strip continuing C at the same height (coplanar, adjacent): C and D merge.
+  // E: a strip coplanar with D far away (not adjacent, no edge): D and E stay apart.
+  PointSet s;
+  const auto A = rspd_test::addRectangle (s, {0, 0, 0}, {0, 1, 0}, {0, 0, 0.5f}, 20, 10);
+  const auto B = rspd_test::addRectangle (s, {0.025f, 0, 0}, {0.5f, 0, 0}, {0, 1, 0}, 10, 20);
+  const auto C = rspd_test::addRectangle (s, {0.55f, 0, 0.05f}, {0.5f, 0, 0}, {0, 1, 0}, 10, 20);
+  const auto D = rspd_test::addRectangle (s, {1.05f, 0, 0.05f}, {0.5f, 0, 0}, {0, 1, 0}, 10, 20);
+  const auto E = rspd_test::addRectangle (s, {5.0f, 0, 0.05f}, {0.5f, 0, 0}, {0, 1, 0}, 10, 20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
+  const double mdp = 0.01, mnd = 0.1;
+  std::vector<PlanarPatch> patches{
+      patchOf (A, {0, 0.5, 0.25}, {1, 0, 0}, mdp, mnd), patchOf (B, {0.25, 0.5, 0}, {0, 0, 1}, mdp, mnd),
+      patchOf (C, {0.8, 0.5, 0.05}, {0, 0, 1}, mdp, mnd), patchOf (D, {1.3, 0.5, 0.05}, {0, 0, 1}, mdp, mnd),
+      patchOf (E, {5.25, 0.5, 0.05}, {0, 0, 1}, mdp, mnd)};
+  EXPECT_FALSE (normalsCompatible (patches[0], patches[1])); // A-B fail M2
+  EXPECT_TRUE (normalsCompatible (patches[1], patches[2]));  // B-C pass M2, fail M3
+  auto labels = labelSamples (s.size (), patches);
+  const std::size_t absorbed = mergePatches (s, g, patches, labels);
+  EXPECT_EQ (absorbed, 1u);
+  ASSERT_EQ (patches.size (), 4u);
+  // C and D had equal size: C (lower first index) represents the group and keeps its plane.
+  EXPECT_EQ (patches[2].members.size (), C.size () + D.size ());
+  EXPECT_DOUBLE_EQ (patches[2].center.x (), 0.8);
+  EXPECT_EQ (patches[2].estimate_size, C.size ()) << "merged patch: caller decides on re-estimation";
+  for (const auto i : D)
+    EXPECT_EQ (labels[i], 2u);
+  for (const auto i : E)
+    EXPECT_EQ (labels[i], 3u);
+  for (const auto i : A)
+    EXPECT_EQ (labels[i], 0u);
+}
+
+TEST (PatchMerge, LargestPatchRepresentsTheGroup)
+{
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {0.3f, 0, 0}, {0, 1, 0}, 6, 20);
+  const auto b = rspd_test::addRectangle (s, {0.3f, 0, 0}, {0.7f, 0, 0}, {0, 1, 0}, 14, 20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 10);
+  std::vector<PlanarPatch> patches{patchOf (a, {0.1, 0.5, 0}, {0, 0, 1}, 0.01, 0.1),
+                                   patchOf (b, {0.6, 0.5, 0}, Eigen::Vector3d (0, 0.01, 1).normalized (), 0.01, 0.1)};
+  auto labels = labelSamples (s.size (), patches);
+  EXPECT_EQ (mergePatches (s, g, patches, labels), 1u);
+  ASSERT_EQ (patches.size (), 1u);
+  EXPECT_EQ (patches[0].members.size (), 400u);
+  EXPECT_DOUBLE_EQ (patches[0].center.x (), 0.6); // b's plane
+  EXPECT_EQ (patches[0].first_index, 0u);
+}
+
+TEST (PatchMerge, OneBoundaryInlierIsEnoughForM3)
+{
+  // B is tilted so that only the samples of B right at A's edge are inliers of A (M3 holds there),
+  // while A's samples are not inliers of B.
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {0.5f, 0, 0}, {0, 1, 0}, 10, 20);
+  const auto b = rspd_test::addRectangle (s, {0.5f, 0, 0}, {0.5f, 0, 0.02f}, {0, 1, 0}, 10, 20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 6);
+  const Eigen::Vector3d nb = Eigen::Vector3d (-0.04, 0, 1).normalized ();
+  std::vector<PlanarPatch> patches{patchOf (a, {0.25, 0.5, 0}, {0, 0, 1}, 0.002, 0.1),
+                                   patchOf (b, {0.75, 0.5, 0.01}, nb, 0.0001, 0.1)};
+  auto labels = labelSamples (s.size (), patches);
+  EXPECT_EQ (mergePatches (s, g, patches, labels), 1u);
+}

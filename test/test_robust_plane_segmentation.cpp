@@ -1,0 +1,406 @@
+/*
+ * Tests of pcl::RobustPlaneSegmentation: PCL conventions, failure paths, outputs, invariances.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/robust_plane_segmentation.h>
+
+#include <pcl/search/kdtree.h>
+
+#include <Eigen/Geometry>
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+namespace
+{
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+/** Three faces of a unit box corner (x = 0, y = 0, z = 0 planes), σ = 2 mm, with truth 1..3. */
+Cloud::Ptr
+boxCorner (int per_face = 3000, std::vector<int>* truth = nullptr, std::uint32_t seed = 1)
+{
+  auto cloud = std::make_shared<Cloud> ();
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (0.0f, 1.0f);
+  std::normal_distribution<float> g (0.0f, 0.002f);
+  for (int f = 0; f < 3; ++f)
+    for (int i = 0; i < per_face; ++i)
+    {
+      float c[3] = {u (rng), u (rng), u (rng)};
+      c[f] = g (rng);
+      cloud->push_back (pcl::PointXYZ (c[0], c[1], c[2]));
+      if (truth)
+        truth->push_back (f + 1);
+    }
+  return cloud;
+}
+
+/** Share of points whose labels agree up to a relabeling (best one-to-one by majority). */
+double
+agreement (const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b)
+{
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> joint;
+  for (std::size_t i = 0; i < a.size (); ++i)
+    ++joint[{a[i], b[i]}];
+  std::map<std::uint32_t, std::pair<std::uint32_t, std::size_t>> best;
+  for (const auto& [key, count] : joint)
+    if (count > best[key.first].second)
+      best[key.first] = {key.second, count};
+  std::size_t same = 0;
+  for (const auto& [la, pick] : best)
+    same += pick.second;
+  return static_cast<double> (same) / a.size ();
+}
+
+std::vector<std::uint32_t>
+labelsOf (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& seg)
+{
+  pcl::PointCloud<pcl::Label> l;
+  seg.getLabels (l);
+  std::vector<std::uint32_t> out;
+  for (const auto& x : l)
+    out.push_back (x.label);
+  return out;
+}
+} // namespace
+
+TEST (RobustPlaneSegmentation, SegmentWithoutCloudFailsWithEmptyOutput)
+{
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  std::vector<pcl::ModelCoefficients> c (1);
+  std::vector<pcl::PointIndices> i (1);
+  seg.segment (c, i);
+  EXPECT_TRUE (c.empty ());
+  EXPECT_TRUE (i.empty ());
+  EXPECT_FALSE (seg.hasResult ());
+  EXPECT_EQ (seg.getColoredCloud (), nullptr);
+}
+
+TEST (RobustPlaneSegmentation, SegmentEmptyCloud)
+{
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (std::make_shared<Cloud> ());
+  pcl::PointIndices inl;
+  pcl::ModelCoefficients co;
+  inl.indices = {1, 2};
+  seg.segment (inl, co);
+  EXPECT_TRUE (inl.indices.empty ());
+  EXPECT_TRUE (co.values.empty ());
+}
+
+TEST (RobustPlaneSegmentation, SegmentAllNaNCloud)
+{
+  auto cloud = std::make_shared<Cloud> ();
+  for (int i = 0; i < 100; ++i)
+    cloud->push_back (pcl::PointXYZ (NAN, NAN, NAN));
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> i;
+  seg.segment (c, i);
+  EXPECT_TRUE (i.empty ());
+  pcl::PointCloud<pcl::Label> labels;
+  seg.getLabels (labels);
+  EXPECT_TRUE (labels.empty ());
+}
+
+TEST (RobustPlaneSegmentation, SegmentWithDifferentNormalAndCloudSize)
+{
+  auto cloud = boxCorner (200);
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  normals->resize (cloud->size () - 1);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  seg.setInputNormals (normals);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> i;
+  seg.segment (c, i);
+  EXPECT_TRUE (i.empty ());
+}
+
+TEST (RobustPlaneSegmentation, SegmentWithIndicesOutOfRange)
+{
+  auto cloud = boxCorner (200);
+  auto idx = std::make_shared<pcl::Indices> (pcl::Indices{0, 1, static_cast<pcl::index_t> (cloud->size ())});
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  seg.setIndices (idx);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> i;
+  seg.segment (c, i);
+  EXPECT_TRUE (i.empty ());
+  idx->back () = -1;
+  seg.setIndices (idx);
+  seg.segment (c, i);
+  EXPECT_TRUE (i.empty ());
+}
+
+TEST (RobustPlaneSegmentation, SegmentWithFewerPointsThanK)
+{
+  auto cloud = boxCorner (10); // 30 points, k = 50
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> i;
+  seg.segment (c, i);
+  EXPECT_TRUE (i.empty ());
+  seg.setNumberOfNeighbours (10); // now enough
+  seg.segment (c, i);
+  EXPECT_TRUE (seg.hasResult ());
+}
+
+TEST (RobustPlaneSegmentation, SegmentWithWrongParametersKeepsOldValues)
+{
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setNumberOfNeighbours (0);
+  EXPECT_EQ (seg.getNumberOfNeighbours (), 50);
+  seg.setMinPatchSizeRatio (-1.0);
+  EXPECT_DOUBLE_EQ (seg.getMinPatchSizeRatio (), 0.001);
+  seg.setMaxOutlierRatio (2.0);
+  EXPECT_DOUBLE_EQ (seg.getMaxOutlierRatio (), 0.25);
+  seg.setMinDistanceTestAngle (2.0);
+  EXPECT_NEAR (seg.getMinDistanceTestAngle (), 75.0 * M_PI / 180.0, 1e-12);
+  EXPECT_NEAR (seg.getMaxNormalDeviation (), 60.0 * M_PI / 180.0, 1e-12);
+  EXPECT_DOUBLE_EQ (seg.getAlpha (), 3.0);
+}
+
+TEST (RobustPlaneSegmentation, NonPlaneModelIsRefused)
+{
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (boxCorner (300));
+  seg.setModelType (pcl::SACMODEL_CYLINDER);
+  pcl::PointIndices inl;
+  pcl::ModelCoefficients co;
+  seg.segment (inl, co);
+  EXPECT_TRUE (inl.indices.empty ());
+  seg.setModelType (pcl::SACMODEL_PLANE);
+  seg.segment (inl, co);
+  EXPECT_FALSE (inl.indices.empty ());
+}
+
+TEST (RobustPlaneSegmentation, SwapsInForSacSegmentation)
+{
+  // The setters a SACSegmentation pipeline calls compile and are harmless.
+  auto cloud = boxCorner (2000);
+  cloud->header.frame_id = "scanner";
+  cloud->header.stamp = 42;
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setOptimizeCoefficients (true);
+  seg.setModelType (pcl::SACMODEL_PLANE);
+  seg.setMethodType (pcl::SAC_RANSAC);
+  seg.setDistanceThreshold (0.01);
+  seg.setMaxIterations (1000);
+  seg.setProbability (0.99);
+  seg.setInputCloud (cloud);
+  pcl::PointIndices inliers;
+  pcl::ModelCoefficients coefficients;
+  seg.segment (inliers, coefficients);
+  ASSERT_EQ (coefficients.values.size (), 4u);
+  EXPECT_GT (inliers.indices.size (), 1500u);
+  EXPECT_EQ (inliers.header.frame_id, "scanner");
+  EXPECT_EQ (coefficients.header.stamp, 42u);
+  const Eigen::Vector3f n (coefficients.values[0], coefficients.values[1], coefficients.values[2]);
+  EXPECT_NEAR (n.norm (), 1.0f, 1e-5f);
+}
+
+TEST (RobustPlaneSegmentation, FindsTheThreeFacesWithConsistentOutputs)
+{
+  std::vector<int> truth;
+  auto cloud = boxCorner (3000, &truth);
+  cloud->sensor_origin_ = Eigen::Vector4f (2, 2, 2, 0);
+  const Cloud before = *cloud;
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> indices;
+  seg.segment (coefficients, indices);
+  ASSERT_EQ (indices.size (), 3u);
+  const auto labels = labelsOf (seg);
+  ASSERT_EQ (labels.size (), cloud->size ());
+  for (std::size_t p = 0; p < indices.size (); ++p)
+  {
+    if (p > 0)
+      EXPECT_GE (indices[p - 1].indices.size (), indices[p].indices.size ()) << "largest first";
+    EXPECT_GT (indices[p].indices.size (), 2400u);
+    EXPECT_TRUE (std::is_sorted (indices[p].indices.begin (), indices[p].indices.end ()));
+    // Each plane lies on one face; the normal points towards the sensor origin (2, 2, 2).
+    std::map<int, int> faces;
+    for (const auto i : indices[p].indices)
+    {
+      ++faces[truth[i]];
+      EXPECT_EQ (labels[i], p + 1);
+    }
+    EXPECT_EQ (faces.size (), 1u);
+    const auto& v = coefficients[p].values;
+    EXPECT_GT (v[0] * 2 + v[1] * 2 + v[2] * 2 + v[3], 0.0f);
+    EXPECT_NEAR (std::abs (v[faces.begin ()->first - 1]), 1.0f, 0.01f);
+    EXPECT_NEAR (v[3], 0.0f, 0.01f);
+    const pcl::RobustPlane& plane = seg.getPlanes ()[p];
+    EXPECT_GT (plane.mdp, 0.0);
+    EXPECT_LT (plane.mdp, 0.02);
+    EXPECT_GE (plane.hull.size (), 4u);
+    // A unit face; PCA normals bend within a few spacings of the edges, so the plane stops short.
+    EXPECT_NEAR (plane.rect_size[0], 0.95, 0.05);
+    EXPECT_NEAR (plane.rect_size[1], 0.95, 0.05);
+    EXPECT_LE (plane.rect_size[1], plane.rect_size[0]);
+    EXPECT_NEAR (plane.centroid[faces.begin ()->first - 1], 0.0, 0.01);
+  }
+  // The caller's cloud is untouched.
+  ASSERT_EQ (before.size (), cloud->size ());
+  for (std::size_t i = 0; i < before.size (); ++i)
+    EXPECT_TRUE (before[i].x == (*cloud)[i].x && before[i].y == (*cloud)[i].y && before[i].z == (*cloud)[i].z);
+  // A coloured cloud for viewing.
+  const auto colored = seg.getColoredCloud ();
+  ASSERT_TRUE (colored);
+  EXPECT_EQ (colored->size (), cloud->size ());
+}
+
+TEST (RobustPlaneSegmentation, IndicesRestrictTheDetectionAndNaNPointsAreSkipped)
+{
+  std::vector<int> truth;
+  auto cloud = boxCorner (3000, &truth);
+  (*cloud)[5].x = NAN;
+  (*cloud)[7].z = INFINITY;
+  auto idx = std::make_shared<pcl::Indices> ();
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+    if (truth[i] != 2)
+      idx->push_back (static_cast<pcl::index_t> (i));
+  idx->push_back (idx->front ()); // a repeated index is ignored
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  seg.setIndices (idx);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> ind;
+  seg.segment (c, ind);
+  ASSERT_EQ (ind.size (), 2u);
+  for (const auto& pi : ind)
+    for (const auto i : pi.indices)
+    {
+      EXPECT_NE (truth[i], 2);
+      EXPECT_NE (i, 5);
+      EXPECT_NE (i, 7);
+    }
+  EXPECT_EQ (seg.getValidIndices ().size (), 6000u - 2u);
+}
+
+TEST (RobustPlaneSegmentation, OwnNeighbourGraphAgreesWithKdTreeSearch)
+{
+  auto cloud = boxCorner (2000);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> a, b;
+  a.setInputCloud (cloud);
+  b.setInputCloud (cloud);
+  b.setSearchMethod (std::make_shared<pcl::search::KdTree<pcl::PointXYZ>> ());
+  const auto la = labelsOf (a), lb = labelsOf (b);
+  EXPECT_GE (agreement (la, lb), 0.999);
+}
+
+TEST (RobustPlaneSegmentation, GivenNormalsAreUsed)
+{
+  std::vector<int> truth;
+  auto cloud = boxCorner (2000, &truth);
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+  {
+    pcl::Normal n (0, 0, 0);
+    n.normal[truth[i] - 1] = (i % 2) ? 1.0f : -1.0f; // exact, with random signs
+    normals->push_back (n);
+  }
+  (*normals)[3].normal_x = NAN; // left out
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  seg.setInputNormals (normals);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> ind;
+  seg.segment (c, ind);
+  ASSERT_EQ (ind.size (), 3u);
+  EXPECT_EQ (seg.getValidIndices ().size (), 5999u);
+  for (const auto& pi : ind)
+    EXPECT_GT (pi.indices.size (), 1900u); // exact normals: nearly every sample joins
+}
+
+TEST (RobustPlaneSegmentation, DeterministicAcrossRunsAndThreads)
+{
+  auto cloud = boxCorner (3000);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> one, two;
+  one.setInputCloud (cloud);
+  one.setNumberOfThreads (1);
+  two.setInputCloud (cloud);
+  two.setNumberOfThreads (2);
+  std::vector<pcl::ModelCoefficients> c1, c2;
+  std::vector<pcl::PointIndices> i1, i2;
+  one.segment (c1, i1);
+  two.segment (c2, i2);
+  ASSERT_EQ (i1.size (), i2.size ());
+  for (std::size_t p = 0; p < i1.size (); ++p)
+  {
+    EXPECT_EQ (i1[p].indices, i2[p].indices);
+    EXPECT_EQ (c1[p].values, c2[p].values);
+  }
+}
+
+TEST (RobustPlaneSegmentation, ResultIsCachedUntilAnInputChanges)
+{
+  auto cloud = boxCorner (1000);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> i;
+  seg.segment (c, i);
+  const pcl::RobustPlane* first = seg.getPlanes ().data ();
+  seg.segment (c, i);
+  EXPECT_EQ (seg.getPlanes ().data (), first) << "second call reuses the cached planes";
+  seg.setMinPatchSize (50);
+  seg.segment (c, i);
+  EXPECT_EQ (seg.getResolvedMinPatchSize (), 50u);
+}
+
+TEST (RobustPlaneSegmentation, ScaleOffsetAndRotationDoNotChangeThePlanes)
+{
+  auto cloud = boxCorner (3000);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  const auto base = labelsOf (seg);
+  const Eigen::Matrix3f rot = (Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1, 2, 3).normalized ())).toRotationMatrix ();
+  // Scale and offset change nothing (centring in double, data-scaled floors). Rotation moves the
+  // octree's axis-aligned cells, so seeds differ: the same planes, memberships nearly equal.
+  struct Variant { const char* name; float scale; Eigen::Vector3f offset; bool rotate; double min_agreement; };
+  for (const Variant& v : {Variant{"mm", 1000.0f, Eigen::Vector3f::Zero (), false, 0.995},
+                           Variant{"1 km away", 1.0f, Eigen::Vector3f (1000, -1000, 500), false, 0.99},
+                           Variant{"rotated", 1.0f, Eigen::Vector3f::Zero (), true, 0.9}})
+  {
+    auto moved = std::make_shared<Cloud> ();
+    for (const auto& p : *cloud)
+    {
+      Eigen::Vector3f q = p.getVector3fMap () * v.scale;
+      if (v.rotate)
+        q = rot * q;
+      q += v.offset;
+      moved->push_back (pcl::PointXYZ (q.x (), q.y (), q.z ()));
+    }
+    pcl::RobustPlaneSegmentation<pcl::PointXYZ> s2;
+    s2.setInputCloud (moved);
+    const auto l2 = labelsOf (s2);
+    EXPECT_GE (agreement (base, l2), v.min_agreement) << v.name;
+    EXPECT_EQ (*std::max_element (l2.begin (), l2.end ()), 3u) << v.name;
+  }
+}
+
+TEST (RobustPlaneSegmentation, OtherPointTypesAreInstantiated)
+{
+  auto cloud = boxCorner (1000);
+  auto rgb = std::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> ();
+  for (const auto& p : *cloud)
+  {
+    pcl::PointXYZRGB q;
+    q.x = p.x; q.y = p.y; q.z = p.z;
+    rgb->push_back (q);
+  }
+  pcl::RobustPlaneSegmentation<pcl::PointXYZRGB, pcl::PointNormal> seg;
+  seg.setInputCloud (rgb);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> i;
+  seg.segment (c, i);
+  EXPECT_EQ (i.size (), 3u);
+}
