@@ -1,0 +1,242 @@
+/*
+ * rspd_evaluate: score a plane detection against ground truth by the paper's protocol (Sec. 4.2).
+ * SPDX-License-Identifier: BSD-3-Clause
+ *
+ *   rspd_evaluate CLOUD TRUTH DETECTION [--voxel F] [--json]
+ *
+ * CLOUD is a .pcd or .ply file; TRUTH and DETECTION are per-point labels, either a PCD with a
+ * "label" field or raw little-endian uint32 (any other extension, e.g. .gt). Exit status: 0 on
+ * success, 1 on a file or data error, 2 on a usage error; errors are one line on stderr.
+ */
+
+#include "label_io.h"
+
+#include <pcl_rspd/plane_evaluation.h>
+
+#include <pcl/console/print.h>
+#include <pcl/io/ply_io.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace
+{
+void
+printUsage (std::FILE* out)
+{
+  std::fprintf (out,
+                "usage: rspd_evaluate CLOUD TRUTH DETECTION [--voxel F] [--json]\n"
+                "  CLOUD       .pcd or .ply point cloud\n"
+                "  TRUTH       ground-truth labels: PCD with a 'label' field, or raw uint32 LE per point\n"
+                "  DETECTION   detected labels, same formats (0 = no plane)\n"
+                "  --voxel F   voxel edge as a fraction of the largest extent (default 0.01)\n"
+                "  --json      print one JSON object instead of text\n");
+}
+
+int
+usageError (const std::string& message)
+{
+  std::fprintf (stderr, "rspd_evaluate: %s (see --help)\n", message.c_str ());
+  return 2;
+}
+
+int
+fileError (const std::string& message)
+{
+  std::fprintf (stderr, "rspd_evaluate: %s\n", message.c_str ());
+  return 1;
+}
+
+/** \brief Read coordinate \a field of point \a i of \a blob as float (FLOAT32 or FLOAT64 fields). */
+float
+coordinate (const pcl::PCLPointCloud2& blob, const pcl::PCLPointField& field, std::size_t i)
+{
+  const std::size_t row = i / blob.width, col = i % blob.width;
+  const std::uint8_t* p = blob.data.data () + row * blob.row_step + col * blob.point_step + field.offset;
+  if (field.datatype == pcl::PCLPointField::FLOAT64)
+  {
+    double v;
+    std::memcpy (&v, p, sizeof (v));
+    return static_cast<float> (v);
+  }
+  float v;
+  std::memcpy (&v, p, sizeof (v));
+  return v;
+}
+
+/** \brief Load a .pcd or .ply cloud's x, y, z (float or double fields) keeping every point, NaNs
+  * included, so that the label files line up with it.
+  */
+bool
+loadCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, std::string& error)
+{
+  pcl::PCLPointCloud2 blob;
+  if (rspd_tools::hasExtension (path, ".pcd"))
+  {
+    if (!rspd_tools::readPCDBlob (path, blob, error))
+      return false;
+  }
+  else if (rspd_tools::hasExtension (path, ".ply"))
+  {
+    std::uint64_t size = 0;
+    if (!rspd_tools::regularFileSize (path, size, error))
+      return false;
+    if (size == 0)
+    {
+      error = path + ": empty file";
+      return false;
+    }
+    try
+    {
+      if (pcl::io::loadPLYFile (path, blob) < 0)
+      {
+        error = path + ": not a readable PLY file";
+        return false;
+      }
+    }
+    catch (const std::exception& e)
+    {
+      error = path + ": not a readable PLY file (" + e.what () + ")";
+      return false;
+    }
+  }
+  else
+  {
+    error = path + ": unsupported cloud format (expected .pcd or .ply)";
+    return false;
+  }
+
+  const pcl::PCLPointField* xyz[3] = {nullptr, nullptr, nullptr};
+  const char* names[3] = {"x", "y", "z"};
+  for (const auto& f : blob.fields)
+    for (int a = 0; a < 3; ++a)
+      if (f.name == names[a])
+        xyz[a] = &f;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!xyz[a])
+    {
+      error = path + ": no '" + names[a] + "' field";
+      return false;
+    }
+    if (xyz[a]->datatype != pcl::PCLPointField::FLOAT32 &&
+        xyz[a]->datatype != pcl::PCLPointField::FLOAT64)
+    {
+      error = path + ": field '" + names[a] + "' is not float32 or float64";
+      return false;
+    }
+    if (xyz[a]->offset + pcl::getFieldSize (xyz[a]->datatype) > blob.point_step)
+    {
+      error = path + ": inconsistent point layout";
+      return false;
+    }
+  }
+  const std::size_t count = static_cast<std::size_t> (blob.width) * blob.height;
+  if (blob.data.size () < static_cast<std::size_t> (blob.row_step) * blob.height ||
+      static_cast<std::size_t> (blob.point_step) * blob.width > blob.row_step)
+  {
+    error = path + ": inconsistent point layout";
+    return false;
+  }
+  cloud.resize (count);
+  for (std::size_t i = 0; i < count; ++i)
+    cloud[i] = pcl::PointXYZ (coordinate (blob, *xyz[0], i), coordinate (blob, *xyz[1], i),
+                              coordinate (blob, *xyz[2], i));
+  cloud.width = blob.width;
+  cloud.height = blob.height;
+  cloud.is_dense = false;
+  return true;
+}
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  std::vector<std::string> positional;
+  double voxel_ratio = 0.01;
+  bool json = false;
+  bool options_done = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (options_done || arg.empty () || arg[0] != '-' || arg == "-")
+    {
+      positional.push_back (arg);
+      continue;
+    }
+    if (arg == "--")
+      options_done = true;
+    else if (arg == "-h" || arg == "--help")
+    {
+      printUsage (stdout);
+      return 0;
+    }
+    else if (arg == "--json")
+      json = true;
+    else if (arg == "--voxel" || arg.rfind ("--voxel=", 0) == 0)
+    {
+      std::string value;
+      if (arg == "--voxel")
+      {
+        if (i + 1 >= argc)
+          return usageError ("--voxel needs a value");
+        value = argv[++i];
+      }
+      else
+        value = arg.substr (std::strlen ("--voxel="));
+      char* end = nullptr;
+      errno = 0;
+      voxel_ratio = std::strtod (value.c_str (), &end);
+      if (value.empty () || *end != '\0' || errno == ERANGE || !(voxel_ratio > 0.0) ||
+          !std::isfinite (voxel_ratio))
+        return usageError ("--voxel needs a positive number, got '" + value + "'");
+    }
+    else
+      return usageError ("unknown option '" + arg + "'");
+  }
+  if (positional.size () != 3)
+    return usageError ("expected CLOUD TRUTH DETECTION, got " + std::to_string (positional.size ()) +
+                       " file argument(s)");
+
+  // PCL's readers print their own diagnostics; errors here must be exactly one line of ours.
+  pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
+
+  try
+  {
+    std::string error;
+    pcl::PointCloud<pcl::PointXYZ> cloud;
+    if (!loadCloud (positional[0], cloud, error))
+      return fileError (error);
+    std::vector<std::uint32_t> truth, detected;
+    if (!rspd_tools::readLabels (positional[1], cloud.size (), truth, error))
+      return fileError (error);
+    if (!rspd_tools::readLabels (positional[2], cloud.size (), detected, error))
+      return fileError (error);
+
+    const pcl::rspd::EvaluationResult r =
+        pcl::rspd::evaluatePlaneDetection (cloud, truth, detected, voxel_ratio);
+
+    if (json)
+      std::printf ("{\"precision\": %.10g, \"recall\": %.10g, \"f1\": %.10g, \"found\": %d, "
+                   "\"planes\": %d, \"detected\": %d, \"fragments\": %d, \"false_planes\": %d, "
+                   "\"tp\": %zu, \"fp\": %zu, \"fn\": %zu, \"voxel_ratio\": %.10g}\n",
+                   r.precision, r.recall, r.f1, r.found, r.planes, r.detected, r.fragments,
+                   r.false_planes, r.tp, r.fp, r.fn, voxel_ratio);
+    else
+      std::printf ("precision: %.6f\nrecall: %.6f\nF1: %.6f\nfound: %d/%d\ndetected: %d\n"
+                   "fragments: %d\nfalse planes: %d\n",
+                   r.precision, r.recall, r.f1, r.found, r.planes, r.detected, r.fragments,
+                   r.false_planes);
+  }
+  catch (const std::exception& e)
+  {
+    return fileError (e.what ());
+  }
+  return 0;
+}
