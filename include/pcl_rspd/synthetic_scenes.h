@@ -23,19 +23,26 @@ enum class SurfaceKind : std::uint8_t
 {
   Plane = 0,   ///< a planar surface (truth label > 0)
   Curved = 1,  ///< a curved surface: cylinder, pillar, sphere, tank, pipe (truth label 0)
-  Outlier = 2  ///< scattered clutter / outlier (truth label 0)
+  Outlier = 2  ///< scattered clutter / outlier (truth label 0); in the scanned room also the
+               ///< samples of a plane seen by too few rays to count as ground truth
 };
 
 /** \brief Options shared by every scene. Lengths are in the scene's own units (metres unless scaled). */
 struct SceneOptions
 {
   std::size_t num_points = 0;   ///< samples to generate (0: the scene's default)
-  double noise = -1.0;          ///< Gaussian noise sigma along the surface normal (< 0: scene default)
-  double outlier_ratio = -1.0;  ///< share of uniform outliers added (< 0: scene default)
-  bool random_rotation = false; ///< apply a random rotation about the scene's centre
-  double scale = 1.0;           ///< multiply every coordinate (e.g. 1000 for millimetres)
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero (); ///< translate after scaling/rotating
-  bool shuffle = true;          ///< shuffle sample order (unorganized cloud)
+  /** Gaussian noise sigma in scene units before scaling, along the surface normal (along the
+    * ray for the scanned room); < 0: the scene's default. */
+  double noise = -1.0;
+  /** Share of num_points that are outliers, uniform in the scene's box grown by 5 % of its
+    * diagonal on each side; in [0, 1], < 0: the scene's default (0.15 facade, 0 otherwise). */
+  double outlier_ratio = -1.0;
+  /** Rotate by a random rotation (drawn from the seed alone) about the centre of the scene's
+    * nominal bounding box. */
+  bool random_rotation = false;
+  double scale = 1.0;           ///< multiply every coordinate, after rotating (e.g. 1000 for mm)
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero (); ///< translate after rotating and scaling
+  bool shuffle = true;          ///< shuffle sample order (false: generation order, by surface)
   std::uint32_t seed = 1;       ///< random seed; same seed and options give the same scene
 };
 
@@ -43,18 +50,29 @@ struct SceneOptions
 struct Scene
 {
   std::string name;
+  /** width = size, height = 1, is_dense; for the scanned room sensor_origin_ is the scanner. */
   pcl::PointCloud<pcl::PointXYZ> cloud;
   std::vector<std::uint32_t> labels;   ///< 0 = no plane, 1..num_planes
   std::vector<SurfaceKind> kinds;      ///< what each sample lies on
   int num_planes = 0;                  ///< distinct plane labels used
 };
 
-/** \brief Names accepted by makeScene: "cube", "room", "staircase", "facade", "industrial",
-  * "plane" (one noise-free square). */
+/** \brief Names accepted by makeScene, with their defaults (points, noise sigma, planes):
+  * - "cube": 1 m cube surface (100k, 0.01, 6 planes)
+  * - "room": 6 x 5 x 3 m room ray-cast from one sensor position, with door, table, cabinet, a
+  *   pillar and a ball (200k, 0.005, 12 planes; density falls with distance, occluded parts empty)
+  * - "staircase": 15 steps of tread + riser (100k, 0.002, 30 planes)
+  * - "facade": 20 x 10 m wall with 15 recessed windows, 15 % outliers (200k, 0.03, 16 planes)
+  * - "industrial": 20 m yard, ground, walls, platform, tanks and pipes (300k, 0.005, 6 planes)
+  * - "plane": one noise-free 1 x 1 square (10k, 0, 1 plane)
+  */
 std::vector<std::string>
 sceneNames ();
 
-/** \brief Generate the scene \a name. \throws std::invalid_argument for an unknown name. */
+/** \brief Generate the scene \a name with exactly options.num_points samples (or the default).
+  * Plane samples are drawn proportionally to area, except in the ray-cast room.
+  * \throws std::invalid_argument for an unknown name or invalid options (outlier ratio > 1,
+  * non-positive scale, non-finite values). */
 Scene
 makeScene (const std::string& name, const SceneOptions& options = SceneOptions ());
 

@@ -1,0 +1,834 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/*
+ * pcl_rspd: synthetic scenes with per-point plane ground truth.
+ *
+ * Every random number is derived from std::mt19937 (whose output sequence is fixed by the
+ * standard) through the small transforms in SceneRandom below, never through the standard
+ * distributions, whose algorithms are implementation-defined. A seed therefore gives the same
+ * scene with any conforming standard library.
+ */
+
+#include <pcl_rspd/synthetic_scenes.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+/** \brief Portable random numbers on top of std::mt19937. */
+class SceneRandom
+{
+  public:
+    explicit SceneRandom (std::uint32_t seed) : engine_ (seed) {}
+
+    /** \brief Uniform double in [0, 1) with 53 random bits. */
+    double
+    uniform ()
+    {
+      const std::uint64_t a = engine_ () >> 5;  // 27 bits
+      const std::uint64_t b = engine_ () >> 6;  // 26 bits
+      return static_cast<double> ((a << 26) | b) * (1.0 / 9007199254740992.0);
+    }
+
+    /** \brief Uniform double in [lo, hi). */
+    double
+    uniform (double lo, double hi)
+    {
+      return lo + (hi - lo) * uniform ();
+    }
+
+    /** \brief Uniform index in [0, n); n must be > 0. */
+    std::size_t
+    index (std::size_t n)
+    {
+      const auto i = static_cast<std::size_t> (uniform () * static_cast<double> (n));
+      return std::min (i, n - 1);
+    }
+
+    /** \brief Standard normal sample (Box-Muller; the second value of each pair is kept). */
+    double
+    normal ()
+    {
+      if (has_spare_)
+      {
+        has_spare_ = false;
+        return spare_;
+      }
+      // 1 - u lies in (0, 1], so the logarithm stays finite.
+      const double radius = std::sqrt (-2.0 * std::log (1.0 - uniform ()));
+      const double angle = 2.0 * kPi * uniform ();
+      spare_ = radius * std::sin (angle);
+      has_spare_ = true;
+      return radius * std::cos (angle);
+    }
+
+    /** \brief Direction uniformly distributed on the unit sphere (Archimedes: z is uniform). */
+    Eigen::Vector3d
+    unitVector ()
+    {
+      const double z = uniform (-1.0, 1.0);
+      const double phi = uniform (0.0, 2.0 * kPi);
+      const double r = std::sqrt (std::max (0.0, 1.0 - z * z));
+      return {r * std::cos (phi), r * std::sin (phi), z};
+    }
+
+  private:
+    std::mt19937 engine_;
+    double spare_ = 0.0;
+    bool has_spare_ = false;
+};
+
+/** \brief One generated sample before it is written into the cloud. */
+struct Sample
+{
+  Eigen::Vector3d p;
+  std::uint32_t label;  ///< candidate plane id (1-based, creation order) or 0
+  SurfaceKind kind;
+};
+
+/** \brief A parallelogram (rectangle in practice): origin + a * u + b * v, a, b in [0, 1]. */
+struct Rect
+{
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d u = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d v = Eigen::Vector3d::Zero ();
+
+  Eigen::Vector3d
+  normal () const
+  {
+    return u.cross (v).normalized ();
+  }
+
+  double
+  area () const
+  {
+    return u.cross (v).norm ();
+  }
+};
+
+/** \brief Axis-aligned rectangle given by its fixed axis, the fixed coordinate and the ranges of
+  * the two other axes, in increasing axis order (x-y for axis 2, x-z for axis 1, y-z for axis 0).
+  */
+Rect
+axisRect (int axis, double value, double lo0, double hi0, double lo1, double hi1)
+{
+  const int i0 = (axis == 0) ? 1 : 0;
+  const int i1 = (axis == 2) ? 1 : 2;
+  Rect r;
+  r.origin = Eigen::Vector3d::Zero ();
+  r.origin[axis] = value;
+  r.origin[i0] = lo0;
+  r.origin[i1] = lo1;
+  r.u = Eigen::Vector3d::Zero ();
+  r.u[i0] = hi0 - lo0;
+  r.v = Eigen::Vector3d::Zero ();
+  r.v[i1] = hi1 - lo1;
+  return r;
+}
+
+/** \brief A region a plane sample must not fall into, because another object covers it there:
+  * an axis-aligned box, or a finite cylinder when radius > 0. */
+struct Exclusion
+{
+  Eigen::Vector3d box_min = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d box_max = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d base = Eigen::Vector3d::Zero ();   ///< cylinder base centre
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ ();  ///< unit cylinder axis
+  double length = 0.0;                               ///< cylinder length along the axis
+  double radius = 0.0;                               ///< 0 for a box
+
+  static Exclusion
+  box (const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
+  {
+    Exclusion e;
+    e.box_min = lo;
+    e.box_max = hi;
+    return e;
+  }
+
+  static Exclusion
+  cylinder (const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double length, double radius)
+  {
+    Exclusion e;
+    e.base = base;
+    e.axis = axis.normalized ();
+    e.length = length;
+    e.radius = radius;
+    return e;
+  }
+
+  bool
+  contains (const Eigen::Vector3d& p) const
+  {
+    if (radius <= 0.0)
+      return (p.array () >= box_min.array ()).all () && (p.array () <= box_max.array ()).all ();
+    const Eigen::Vector3d d = p - base;
+    const double h = d.dot (axis);
+    if (h < 0.0 || h > length)
+      return false;
+    return (d - h * axis).squaredNorm () < radius * radius;
+  }
+};
+
+/** \brief A surface sampled uniformly by area (for every scene except the scanned room). */
+struct Surface
+{
+  double area = 0.0;           ///< area actually exposed (exclusions already subtracted)
+  std::uint32_t label = 0;     ///< candidate plane id, 0 for curved surfaces
+  SurfaceKind kind = SurfaceKind::Plane;
+  /** Draws one noise-free point and its unit normal; the caller adds the noise. */
+  std::function<void (SceneRandom&, Eigen::Vector3d&, Eigen::Vector3d&)> draw;
+};
+
+Surface
+planeSurface (const Rect& rect, std::uint32_t label, std::vector<Exclusion> exclusions = {},
+              double excluded_area = 0.0)
+{
+  Surface s;
+  s.area = rect.area () - excluded_area;
+  s.label = label;
+  s.kind = SurfaceKind::Plane;
+  const Eigen::Vector3d n = rect.normal ();
+  s.draw = [rect, n, exclusions] (SceneRandom& rng, Eigen::Vector3d& p, Eigen::Vector3d& normal)
+  {
+    // Rejection sampling keeps the density uniform over the exposed part; the exposed share is
+    // large for every surface built here, so the loop ends quickly.
+    for (int attempt = 0; attempt < 100000; ++attempt)
+    {
+      const double a = rng.uniform ();
+      const double b = rng.uniform ();
+      p = rect.origin + a * rect.u + b * rect.v;
+      const bool hidden = std::any_of (exclusions.begin (), exclusions.end (),
+                                       [&p] (const Exclusion& e) { return e.contains (p); });
+      if (!hidden)
+      {
+        normal = n;
+        return;
+      }
+    }
+    throw std::logic_error ("synthetic scene: a plane surface is entirely excluded");
+  };
+  return s;
+}
+
+/** \brief Side of a finite open cylinder (no caps). */
+Surface
+cylinderSurface (const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double length,
+                 double radius)
+{
+  Surface s;
+  s.area = 2.0 * kPi * radius * length;
+  s.kind = SurfaceKind::Curved;
+  const Eigen::Vector3d a = axis.normalized ();
+  const Eigen::Vector3d e1 = a.unitOrthogonal ();
+  const Eigen::Vector3d e2 = a.cross (e1);
+  s.draw = [=] (SceneRandom& rng, Eigen::Vector3d& p, Eigen::Vector3d& normal)
+  {
+    const double angle = rng.uniform (0.0, 2.0 * kPi);
+    const double h = rng.uniform (0.0, length);
+    normal = std::cos (angle) * e1 + std::sin (angle) * e2;
+    p = base + h * a + radius * normal;
+  };
+  return s;
+}
+
+/** \brief Upper (+z) half of a sphere, e.g. a tank's dome. */
+Surface
+domeSurface (const Eigen::Vector3d& centre, double radius)
+{
+  Surface s;
+  s.area = 2.0 * kPi * radius * radius;
+  s.kind = SurfaceKind::Curved;
+  s.draw = [=] (SceneRandom& rng, Eigen::Vector3d& p, Eigen::Vector3d& normal)
+  {
+    // Height uniform in [0, 1) gives uniform area density on a sphere zone.
+    const double z = rng.uniform ();
+    const double phi = rng.uniform (0.0, 2.0 * kPi);
+    const double r = std::sqrt (std::max (0.0, 1.0 - z * z));
+    normal = Eigen::Vector3d (r * std::cos (phi), r * std::sin (phi), z);
+    p = centre + radius * normal;
+  };
+  return s;
+}
+
+/** \brief Split \a total into counts proportional to \a weights, summing exactly to \a total
+  * (largest remainder; ties go to the earlier entry so the result is deterministic). */
+std::vector<std::size_t>
+apportion (std::size_t total, const std::vector<double>& weights)
+{
+  std::vector<std::size_t> counts (weights.size (), 0);
+  double sum = 0.0;
+  for (double w : weights)
+    sum += w;
+  if (weights.empty () || sum <= 0.0)
+    return counts;
+  std::vector<std::pair<double, std::size_t>> remainders;
+  std::size_t assigned = 0;
+  for (std::size_t i = 0; i < weights.size (); ++i)
+  {
+    const double exact = static_cast<double> (total) * weights[i] / sum;
+    counts[i] = static_cast<std::size_t> (std::floor (exact));
+    assigned += counts[i];
+    remainders.emplace_back (exact - static_cast<double> (counts[i]), i);
+  }
+  std::stable_sort (remainders.begin (), remainders.end (),
+                    [] (const auto& l, const auto& r) { return l.first > r.first; });
+  for (std::size_t k = 0; assigned < total; ++k, ++assigned)
+    ++counts[remainders[k % remainders.size ()].second];
+  return counts;
+}
+
+/** \brief Draw \a count samples from \a surfaces proportionally to area, in surface order, with
+  * Gaussian noise of \a sigma along each sample's normal. */
+void
+sampleSurfaces (const std::vector<Surface>& surfaces, std::size_t count, double sigma,
+                SceneRandom& rng, std::vector<Sample>& out)
+{
+  std::vector<double> areas;
+  for (const auto& s : surfaces)
+    areas.push_back (s.area);
+  const std::vector<std::size_t> counts = apportion (count, areas);
+  Eigen::Vector3d p, n;
+  for (std::size_t i = 0; i < surfaces.size (); ++i)
+    for (std::size_t k = 0; k < counts[i]; ++k)
+    {
+      surfaces[i].draw (rng, p, n);
+      if (sigma > 0.0)
+        p += sigma * rng.normal () * n;
+      out.push_back ({p, surfaces[i].label, surfaces[i].kind});
+    }
+}
+
+/** \brief Nominal extent and centre of a scene's geometry (before noise and options). */
+struct Extent
+{
+  Eigen::Vector3d min_pt;
+  Eigen::Vector3d max_pt;
+
+  Eigen::Vector3d
+  centre () const
+  {
+    return 0.5 * (min_pt + max_pt);
+  }
+};
+
+/** \brief Outliers uniform in the scene box grown by 5 % of its diagonal on every side, so that
+  * some fall off the surfaces in every direction, including thin scenes such as the facade. */
+void
+addOutliers (const Extent& extent, std::size_t count, SceneRandom& rng, std::vector<Sample>& out)
+{
+  const double margin = 0.05 * (extent.max_pt - extent.min_pt).norm ();
+  const Eigen::Vector3d lo = extent.min_pt.array () - margin;
+  const Eigen::Vector3d hi = extent.max_pt.array () + margin;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    Eigen::Vector3d p;
+    for (int d = 0; d < 3; ++d)
+      p[d] = rng.uniform (lo[d], hi[d]);
+    out.push_back ({p, 0u, SurfaceKind::Outlier});
+  }
+}
+
+/** \brief What a scene builder returns before the common post-processing. */
+struct Generated
+{
+  std::vector<Sample> samples;
+  Extent extent;
+  std::uint32_t num_candidates = 0;  ///< candidate plane ids are 1..num_candidates
+  std::size_t min_plane_samples = 1; ///< planes with fewer samples are not ground truth
+  bool has_sensor = false;           ///< scanned scene: the samples were seen from \a sensor
+  Eigen::Vector3d sensor = Eigen::Vector3d::Zero ();
+};
+
+/** \brief Resolved option values shared by the builders. */
+struct Params
+{
+  std::size_t num_points;
+  std::size_t num_outliers;
+  double noise;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Area-sampled scenes
+
+/** \brief Cube [-0.5, 0.5]^3: 6 face planes. */
+Generated
+buildCube (const Params& prm, SceneRandom& rng)
+{
+  Generated g;
+  g.extent = {Eigen::Vector3d::Constant (-0.5), Eigen::Vector3d::Constant (0.5)};
+  std::vector<Surface> surfaces;
+  std::uint32_t label = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : {-0.5, 0.5})
+      surfaces.push_back (planeSurface (axisRect (axis, side, -0.5, 0.5, -0.5, 0.5), ++label));
+  g.num_candidates = label;
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  return g;
+}
+
+/** \brief Staircase of 15 steps, 0.3 m deep x 0.18 m high x 1.0 m wide, rising along +x; each
+  * step has a riser (vertical, label 2i + 1) and a tread (horizontal, label 2i + 2): 30 planes. */
+Generated
+buildStaircase (const Params& prm, SceneRandom& rng)
+{
+  const int steps = 15;
+  const double depth = 0.3, rise = 0.18, width = 1.0;
+  Generated g;
+  g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (steps * depth, width, steps * rise)};
+  std::vector<Surface> surfaces;
+  std::uint32_t label = 0;
+  for (int i = 0; i < steps; ++i)
+  {
+    const double x0 = i * depth, z0 = i * rise;
+    surfaces.push_back (planeSurface (axisRect (0, x0, 0.0, width, z0, z0 + rise), ++label));
+    surfaces.push_back (
+      planeSurface (axisRect (2, z0 + rise, x0, x0 + depth, 0.0, width), ++label));
+  }
+  g.num_candidates = label;
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  return g;
+}
+
+/** \brief Facade 20 m wide x 10 m tall in the plane y = 0, with 5 x 3 windows of 1.6 x 1.6 m
+  * whose glass is recessed 0.2 m (y = 0.2). Planes: the wall (with the window openings cut out)
+  * and the 15 recessed window planes, 16 in all. The reveals (the recess side faces) are left
+  * out on purpose: at 0.2 m x 1.6 m they would add 60 tiny planes, and a head-on scan sees
+  * little of them. */
+Generated
+buildFacade (const Params& prm, SceneRandom& rng)
+{
+  const double wall_w = 20.0, wall_h = 10.0, recess = 0.2, win = 1.6;
+  const double col_centres[] = {2.0, 6.0, 10.0, 14.0, 18.0};
+  const double row_centres[] = {2.0, 5.0, 8.0};
+  Generated g;
+  g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (wall_w, recess, wall_h)};
+
+  std::vector<Exclusion> openings;
+  std::vector<Surface> windows;
+  std::uint32_t label = 1;  // the wall is label 1
+  for (double zc : row_centres)
+    for (double xc : col_centres)
+    {
+      const double x0 = xc - 0.5 * win, z0 = zc - 0.5 * win;
+      openings.push_back (Exclusion::box (Eigen::Vector3d (x0, -1.0, z0),
+                                          Eigen::Vector3d (x0 + win, 1.0, z0 + win)));
+      windows.push_back (planeSurface (axisRect (1, recess, x0, x0 + win, z0, z0 + win), ++label));
+    }
+  std::vector<Surface> surfaces;
+  surfaces.push_back (planeSurface (axisRect (1, 0.0, 0.0, wall_w, 0.0, wall_h), 1, openings,
+                                    static_cast<double> (openings.size ()) * win * win));
+  surfaces.insert (surfaces.end (), windows.begin (), windows.end ());
+  g.num_candidates = label;
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  return g;
+}
+
+/** \brief Industrial yard, 20 x 20 m: ground, two 6 m walls meeting in a corner, a 6 x 6 x 2 m
+  * platform in that corner (top and its two exposed sides) -- 6 planes -- plus curved clutter:
+  * two tanks (radius 1.5 m, 8 m tall, hemispherical dome, no flat top) and four pipes
+  * (two horizontal, two vertical, radius 0.1 - 0.25 m). */
+Generated
+buildIndustrial (const Params& prm, SceneRandom& rng)
+{
+  const double size = 20.0, wall_h = 6.0;
+  const double plat = 6.0, plat_h = 2.0;             // platform x in [0, 6], y in [14, 20]
+  const double tank_r = 1.5, tank_h = 8.0;
+  const Eigen::Vector3d tanks[] = {{11.0, 15.0, 0.0}, {16.0, 15.0, 0.0}};
+  struct Pipe { Eigen::Vector3d base, axis; double length, radius; };
+  const Pipe pipes[] = {
+    {{0.0, 6.0, 3.0}, Eigen::Vector3d::UnitX (), size, 0.2},   // horizontal, from the side wall
+    {{19.0, 0.0, 2.0}, Eigen::Vector3d::UnitY (), size, 0.15}, // horizontal, into the back wall
+    {{4.0, 9.0, 0.0}, Eigen::Vector3d::UnitZ (), 6.0, 0.25},   // vertical riser
+    {{8.0, 3.0, 0.0}, Eigen::Vector3d::UnitZ (), 5.0, 0.1}};   // vertical riser
+
+  Generated g;
+  g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (size, size, tank_h + tank_r)};
+
+  // Parts of the planes covered by the platform, tank bottoms and pipe ends carry no samples.
+  const Exclusion platform = Exclusion::box (Eigen::Vector3d (-1.0, size - plat, -1.0),
+                                             Eigen::Vector3d (plat, size + 1.0, plat_h));
+  std::vector<Exclusion> ground_ex {platform};
+  double ground_hidden = plat * plat;
+  for (const auto& t : tanks)
+  {
+    ground_ex.push_back (Exclusion::cylinder (t, Eigen::Vector3d::UnitZ (), tank_h, tank_r));
+    ground_hidden += kPi * tank_r * tank_r;
+  }
+  std::vector<Exclusion> side_ex {platform}, back_ex {platform};
+  double side_hidden = plat * plat_h, back_hidden = plat * plat_h;
+  for (const auto& p : pipes)
+  {
+    const Exclusion e = Exclusion::cylinder (p.base, p.axis, p.length, p.radius);
+    const double disc = kPi * p.radius * p.radius;
+    if (p.axis.z () > 0.5)
+    {
+      ground_ex.push_back (e);
+      ground_hidden += disc;
+    }
+    else if (p.axis.x () > 0.5)
+    {
+      side_ex.push_back (e);
+      side_hidden += disc;
+    }
+    else
+    {
+      back_ex.push_back (e);
+      back_hidden += disc;
+    }
+  }
+
+  std::vector<Surface> surfaces;
+  surfaces.push_back (planeSurface (axisRect (2, 0.0, 0.0, size, 0.0, size), 1, ground_ex,
+                                    ground_hidden));
+  surfaces.push_back (planeSurface (axisRect (1, size, 0.0, size, 0.0, wall_h), 2, back_ex,
+                                    back_hidden));
+  surfaces.push_back (planeSurface (axisRect (0, 0.0, 0.0, size, 0.0, wall_h), 3, side_ex,
+                                    side_hidden));
+  surfaces.push_back (planeSurface (axisRect (2, plat_h, 0.0, plat, size - plat, size), 4));
+  surfaces.push_back (planeSurface (axisRect (1, size - plat, 0.0, plat, 0.0, plat_h), 5));
+  surfaces.push_back (planeSurface (axisRect (0, plat, size - plat, size, 0.0, plat_h), 6));
+  g.num_candidates = 6;
+  for (const auto& t : tanks)
+  {
+    surfaces.push_back (cylinderSurface (t, Eigen::Vector3d::UnitZ (), tank_h, tank_r));
+    surfaces.push_back (domeSurface (t + Eigen::Vector3d (0.0, 0.0, tank_h), tank_r));
+  }
+  for (const auto& p : pipes)
+    surfaces.push_back (cylinderSurface (p.base, p.axis, p.length, p.radius));
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  return g;
+}
+
+/** \brief One noise-free (by default) 1 x 1 square in the plane z = 0, centred on the origin. */
+Generated
+buildPlane (const Params& prm, SceneRandom& rng)
+{
+  Generated g;
+  g.extent = {Eigen::Vector3d (-0.5, -0.5, 0.0), Eigen::Vector3d (0.5, 0.5, 0.0)};
+  std::vector<Surface> surfaces {planeSurface (axisRect (2, 0.0, -0.5, 0.5, -0.5, 0.5), 1)};
+  g.num_candidates = 1;
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  return g;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scanned room
+
+/** \brief Something a ray can hit in the room. */
+struct RayTarget
+{
+  enum class Type { Rect, VerticalCylinder, Sphere } type = Type::Rect;
+  Rect rect;                 ///< for Rect
+  /** Cylinder base centre (its z is the bottom) or sphere centre. */
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
+  double radius = 0.0;
+  double height = 0.0;       ///< cylinder height
+  std::uint32_t label = 0;   ///< candidate plane id, 0 for curved targets
+  Eigen::Vector3d rect_normal = Eigen::Vector3d::Zero ();  ///< u x v, cached for the rays
+  double inv_uu = 0.0;       ///< 1 / |u|^2
+  double inv_vv = 0.0;       ///< 1 / |v|^2
+
+  /** \brief Ray parameter of the first hit with t > 0, or +inf. \a d is a unit direction. */
+  double
+  intersect (const Eigen::Vector3d& s, const Eigen::Vector3d& d) const
+  {
+    const double inf = std::numeric_limits<double>::infinity ();
+    switch (type)
+    {
+      case Type::Rect:
+      {
+        const double denom = rect_normal.dot (d);
+        if (std::abs (denom) < 1e-12)
+          return inf;
+        const double t = rect_normal.dot (rect.origin - s) / denom;
+        if (t <= 1e-9)
+          return inf;
+        const Eigen::Vector3d q = s + t * d - rect.origin;
+        const double a = q.dot (rect.u) * inv_uu;
+        const double b = q.dot (rect.v) * inv_vv;
+        return (a >= 0.0 && a <= 1.0 && b >= 0.0 && b <= 1.0) ? t : inf;
+      }
+      case Type::VerticalCylinder:
+      {
+        // Only the near (outside) wall: the sensor is outside and the caps touch floor/ceiling.
+        const Eigen::Vector2d o = s.head<2> () - centre.head<2> ();
+        const Eigen::Vector2d dd = d.head<2> ();
+        const double a = dd.squaredNorm ();
+        if (a < 1e-12)
+          return inf;
+        const double b = o.dot (dd);
+        const double c = o.squaredNorm () - radius * radius;
+        const double disc = b * b - a * c;
+        if (disc < 0.0)
+          return inf;
+        const double t = (-b - std::sqrt (disc)) / a;
+        if (t <= 1e-9)
+          return inf;
+        const double z = s.z () + t * d.z ();
+        return (z >= centre.z () && z <= centre.z () + height) ? t : inf;
+      }
+      case Type::Sphere:
+      {
+        const Eigen::Vector3d o = s - centre;
+        const double b = o.dot (d);
+        const double c = o.squaredNorm () - radius * radius;
+        const double disc = b * b - c;
+        if (disc < 0.0)
+          return inf;
+        const double t = -b - std::sqrt (disc);
+        return (t > 1e-9) ? t : inf;
+      }
+    }
+    return inf;
+  }
+};
+
+RayTarget
+rectTarget (const Rect& r, std::uint32_t label)
+{
+  RayTarget t;
+  t.type = RayTarget::Type::Rect;
+  t.rect = r;
+  t.label = label;
+  t.rect_normal = r.u.cross (r.v);
+  t.inv_uu = 1.0 / r.u.squaredNorm ();
+  t.inv_vv = 1.0 / r.v.squaredNorm ();
+  return t;
+}
+
+/** \brief Room of 6 x 5 x 3 m (x, y, z) scanned from one position, sensor at (1.5, 1.5, 1.6).
+  *
+  * Rays leave the sensor in uniformly random directions and keep their first hit, so the density
+  * falls with the squared distance and occluded surfaces stay empty, as in a real single scan.
+  * Noise is applied along the ray (range noise). Candidate planes: floor, ceiling, 4 walls, a
+  * door 0.9 x 2.0 m standing 2 cm proud of the far wall, a table top and its front panel, and a
+  * cabinet against the near wall (front, side and top visible) -- 12 in all. Curved: a pillar
+  * (cylinder r = 0.3 m, floor to ceiling) and a ball (sphere r = 0.3 m on the floor). */
+Generated
+buildRoom (const Params& prm, SceneRandom& rng)
+{
+  const double lx = 6.0, ly = 5.0, lz = 3.0;
+  const Eigen::Vector3d sensor (1.5, 1.5, 1.6);
+  Generated g;
+  g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (lx, ly, lz)};
+  g.has_sensor = true;
+  g.sensor = sensor;
+
+  std::vector<RayTarget> targets;
+  std::uint32_t label = 0;
+  targets.push_back (rectTarget (axisRect (2, 0.0, 0.0, lx, 0.0, ly), ++label));   // floor
+  targets.push_back (rectTarget (axisRect (2, lz, 0.0, lx, 0.0, ly), ++label));    // ceiling
+  targets.push_back (rectTarget (axisRect (0, 0.0, 0.0, ly, 0.0, lz), ++label));   // wall x = 0
+  targets.push_back (rectTarget (axisRect (0, lx, 0.0, ly, 0.0, lz), ++label));    // wall x = 6
+  targets.push_back (rectTarget (axisRect (1, 0.0, 0.0, lx, 0.0, lz), ++label));   // wall y = 0
+  targets.push_back (rectTarget (axisRect (1, ly, 0.0, lx, 0.0, lz), ++label));    // wall y = 5
+  // Door on the far wall, 2 cm proud of it (one slab face; its 2 cm edges are negligible).
+  targets.push_back (rectTarget (axisRect (1, ly - 0.02, 3.5, 4.4, 0.0, 2.0), ++label));
+  // Table: 1.2 x 0.8 m top at 0.75 m, with a modesty panel under its sensor-facing edge.
+  targets.push_back (rectTarget (axisRect (2, 0.75, 3.0, 4.2, 2.5, 3.3), ++label));
+  targets.push_back (rectTarget (axisRect (1, 2.5, 3.0, 4.2, 0.05, 0.75), ++label));
+  // Cabinet 0.8 x 0.8 x 1.0 m against wall y = 0, low enough for the sensor to see its top; the
+  // faces the sensor cannot see are not modelled.
+  targets.push_back (rectTarget (axisRect (0, 3.0, 0.0, 0.8, 0.0, 1.0), ++label));  // front
+  targets.push_back (rectTarget (axisRect (1, 0.8, 3.0, 3.8, 0.0, 1.0), ++label));  // side
+  targets.push_back (rectTarget (axisRect (2, 1.0, 3.0, 3.8, 0.0, 0.8), ++label));  // top
+  g.num_candidates = label;
+
+  RayTarget pillar;
+  pillar.type = RayTarget::Type::VerticalCylinder;
+  pillar.centre = Eigen::Vector3d (4.8, 3.8, 0.0);
+  pillar.radius = 0.3;
+  pillar.height = lz;
+  targets.push_back (pillar);
+  RayTarget ball;
+  ball.type = RayTarget::Type::Sphere;
+  ball.centre = Eigen::Vector3d (1.0, 3.8, 0.3);
+  ball.radius = 0.3;
+  targets.push_back (ball);
+
+  const std::size_t rays = prm.num_points - prm.num_outliers;
+  g.samples.reserve (prm.num_points);
+  while (g.samples.size () < rays)
+  {
+    const Eigen::Vector3d d = rng.unitVector ();
+    double best = std::numeric_limits<double>::infinity ();
+    const RayTarget* hit = nullptr;
+    for (const auto& t : targets)
+    {
+      const double tt = t.intersect (sensor, d);
+      if (tt < best)
+      {
+        best = tt;
+        hit = &t;
+      }
+    }
+    if (hit == nullptr)  // the room is closed, so this only guards against rounding at corners
+      continue;
+    const double range = best + (prm.noise > 0.0 ? prm.noise * rng.normal () : 0.0);
+    g.samples.push_back ({sensor + range * d, hit->label,
+                          hit->label > 0 ? SurfaceKind::Plane : SurfaceKind::Curved});
+  }
+  // A plane seen by only a handful of rays is not a fair detection target: count a plane only
+  // with at least 0.1 % of the scene's samples (200 at the default size), and never under 20.
+  g.min_plane_samples = std::max<std::size_t> (20, prm.num_points / 1000);
+  return g;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+struct SceneSpec
+{
+  const char* name;
+  std::size_t default_points;
+  double default_noise;
+  double default_outliers;
+  Generated (*build) (const Params&, SceneRandom&);
+};
+
+const SceneSpec kScenes[] = {
+  {"cube", 100000, 0.01, 0.0, &buildCube},
+  {"room", 200000, 0.005, 0.0, &buildRoom},
+  {"staircase", 100000, 0.002, 0.0, &buildStaircase},
+  {"facade", 200000, 0.03, 0.15, &buildFacade},
+  {"industrial", 300000, 0.005, 0.0, &buildIndustrial},
+  {"plane", 10000, 0.0, 0.0, &buildPlane},
+};
+
+/** \brief Random rotation, uniform over SO(3): a normalised 4-D Gaussian is a uniform unit
+  * quaternion. */
+Eigen::Matrix3d
+randomRotation (SceneRandom& rng)
+{
+  Eigen::Vector4d q;
+  do
+  {
+    for (int i = 0; i < 4; ++i)
+      q[i] = rng.normal ();
+  } while (q.norm () < 1e-6);
+  q.normalize ();
+  return Eigen::Quaterniond (q[0], q[1], q[2], q[3]).toRotationMatrix ();
+}
+
+} // namespace
+
+std::vector<std::string>
+sceneNames ()
+{
+  std::vector<std::string> names;
+  for (const auto& s : kScenes)
+    names.emplace_back (s.name);
+  return names;
+}
+
+Scene
+makeScene (const std::string& name, const SceneOptions& options)
+{
+  const SceneSpec* spec = nullptr;
+  for (const auto& s : kScenes)
+    if (name == s.name)
+      spec = &s;
+  if (spec == nullptr)
+    throw std::invalid_argument ("unknown scene '" + name + "'");
+  if (!std::isfinite (options.noise))
+    throw std::invalid_argument ("scene noise must be finite");
+  if (!std::isfinite (options.outlier_ratio) || options.outlier_ratio > 1.0)
+    throw std::invalid_argument ("scene outlier ratio must be at most 1");
+  if (!std::isfinite (options.scale) || options.scale <= 0.0)
+    throw std::invalid_argument ("scene scale must be positive and finite");
+  if (!options.offset.allFinite ())
+    throw std::invalid_argument ("scene offset must be finite");
+
+  Params prm;
+  prm.num_points = options.num_points > 0 ? options.num_points : spec->default_points;
+  prm.noise = options.noise >= 0.0 ? options.noise : spec->default_noise;
+  const double ratio = options.outlier_ratio >= 0.0 ? options.outlier_ratio
+                                                    : spec->default_outliers;
+  prm.num_outliers = std::min (prm.num_points, static_cast<std::size_t> (
+                                 std::llround (ratio * static_cast<double> (prm.num_points))));
+
+  // Independent streams for geometry, rotation and order, so that e.g. turning shuffling off
+  // or changing the rotation keeps the same samples.
+  SceneRandom rng (options.seed);
+  SceneRandom rotation_rng (options.seed ^ 0x9e3779b9u);
+  SceneRandom shuffle_rng (options.seed ^ 0x85ebca6bu);
+
+  Generated g = spec->build (prm, rng);
+  addOutliers (g.extent, prm.num_outliers, rng, g.samples);
+
+  // Renumber the planes that received enough samples as 1..K in candidate order; samples of a
+  // plane that did not count become clutter, so that Plane always means label > 0.
+  std::vector<std::size_t> counts (g.num_candidates + 1, 0);
+  for (const auto& s : g.samples)
+    ++counts[s.label];
+  std::vector<std::uint32_t> relabel (g.num_candidates + 1, 0);
+  std::uint32_t num_planes = 0;
+  for (std::uint32_t c = 1; c <= g.num_candidates; ++c)
+    if (counts[c] > 0 && counts[c] >= g.min_plane_samples)
+      relabel[c] = ++num_planes;
+  for (auto& s : g.samples)
+  {
+    if (s.label == 0)
+      continue;
+    s.label = relabel[s.label];
+    if (s.label == 0)
+      s.kind = SurfaceKind::Outlier;
+  }
+
+  const Eigen::Vector3d centre = g.extent.centre ();
+  const Eigen::Matrix3d rotation = options.random_rotation ? randomRotation (rotation_rng)
+                                                           : Eigen::Matrix3d::Identity ();
+  auto transform = [&] (const Eigen::Vector3d& p) -> Eigen::Vector3d {
+    const Eigen::Vector3d q =
+      options.random_rotation ? Eigen::Vector3d (rotation * (p - centre) + centre) : p;
+    return options.scale * q + options.offset;
+  };
+  for (auto& s : g.samples)
+    s.p = transform (s.p);
+
+  if (options.shuffle)
+    for (std::size_t i = g.samples.size (); i > 1; --i)
+      std::swap (g.samples[i - 1], g.samples[shuffle_rng.index (i)]);
+
+  Scene scene;
+  scene.name = spec->name;
+  scene.num_planes = static_cast<int> (num_planes);
+  scene.cloud.resize (g.samples.size ());
+  scene.labels.resize (g.samples.size ());
+  scene.kinds.resize (g.samples.size ());
+  for (std::size_t i = 0; i < g.samples.size (); ++i)
+  {
+    const Eigen::Vector3f p = g.samples[i].p.cast<float> ();
+    scene.cloud[i].x = p.x ();
+    scene.cloud[i].y = p.y ();
+    scene.cloud[i].z = p.z ();
+    scene.labels[i] = g.samples[i].label;
+    scene.kinds[i] = g.samples[i].kind;
+  }
+  scene.cloud.width = static_cast<std::uint32_t> (g.samples.size ());
+  scene.cloud.height = 1;
+  scene.cloud.is_dense = true;
+  // Normal orientation and viewpoint-aware tools can use the scanner position.
+  if (g.has_sensor)
+    scene.cloud.sensor_origin_.head<3> () = transform (g.sensor).cast<float> ();
+  return scene;
+}
+
+} // namespace rspd
+} // namespace pcl

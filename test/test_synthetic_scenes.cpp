@@ -1,0 +1,369 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/*
+ * Tests of the synthetic scene generator: sizes, label bookkeeping, determinism, geometry and the
+ * options.
+ */
+
+#include <pcl_rspd/synthetic_scenes.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using pcl::rspd::makeScene;
+using pcl::rspd::Scene;
+using pcl::rspd::SceneOptions;
+using pcl::rspd::SurfaceKind;
+
+namespace
+{
+/** \brief Expected default size and plane count of every scene. */
+const std::map<std::string, std::pair<std::size_t, int>>&
+defaults ()
+{
+  static const std::map<std::string, std::pair<std::size_t, int>> d = {
+    {"cube", {100000, 6}},       {"room", {200000, 12}},      {"staircase", {100000, 30}},
+    {"facade", {200000, 16}},    {"industrial", {300000, 6}}, {"plane", {10000, 1}}};
+  return d;
+}
+
+std::size_t
+countKind (const Scene& scene, SurfaceKind kind)
+{
+  return static_cast<std::size_t> (std::count (scene.kinds.begin (), scene.kinds.end (), kind));
+}
+
+bool
+sameCloud (const Scene& a, const Scene& b)
+{
+  if (a.cloud.size () != b.cloud.size ())
+    return false;
+  for (std::size_t i = 0; i < a.cloud.size (); ++i)
+    if (a.cloud[i].x != b.cloud[i].x || a.cloud[i].y != b.cloud[i].y ||
+        a.cloud[i].z != b.cloud[i].z)
+      return false;
+  return true;
+}
+
+/** \brief Structural checks every scene must pass. */
+void
+checkConsistent (const Scene& scene, std::size_t expected_points)
+{
+  ASSERT_EQ (scene.cloud.size (), expected_points);
+  EXPECT_EQ (scene.cloud.width, expected_points);
+  EXPECT_EQ (scene.cloud.height, 1u);
+  EXPECT_TRUE (scene.cloud.is_dense);
+  ASSERT_EQ (scene.labels.size (), expected_points);
+  ASSERT_EQ (scene.kinds.size (), expected_points);
+  ASSERT_GE (scene.num_planes, 0);
+
+  std::vector<std::size_t> per_label (static_cast<std::size_t> (scene.num_planes) + 1, 0);
+  for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+  {
+    const auto& p = scene.cloud[i];
+    ASSERT_TRUE (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z)) << i;
+    ASSERT_LE (scene.labels[i], static_cast<std::uint32_t> (scene.num_planes)) << i;
+    ++per_label[scene.labels[i]];
+    // Plane samples carry a plane label and nothing else does.
+    ASSERT_EQ (scene.kinds[i] == SurfaceKind::Plane, scene.labels[i] > 0) << i;
+  }
+  for (int l = 1; l <= scene.num_planes; ++l)
+    EXPECT_GT (per_label[l], 0u) << "label " << l << " unused";
+}
+} // namespace
+
+TEST (SyntheticScenes, NamesAreTheSixScenes)
+{
+  const std::vector<std::string> names = pcl::rspd::sceneNames ();
+  ASSERT_EQ (names.size (), defaults ().size ());
+  for (const auto& n : names)
+    EXPECT_EQ (defaults ().count (n), 1u) << n;
+}
+
+TEST (SyntheticScenes, UnknownNameThrows)
+{
+  EXPECT_THROW (makeScene ("no-such-scene"), std::invalid_argument);
+  EXPECT_THROW (makeScene (""), std::invalid_argument);
+}
+
+TEST (SyntheticScenes, InvalidOptionsThrow)
+{
+  SceneOptions o;
+  o.num_points = 100;
+  o.outlier_ratio = 1.5;
+  EXPECT_THROW (makeScene ("cube", o), std::invalid_argument);
+  o.outlier_ratio = -1.0;
+  o.scale = 0.0;
+  EXPECT_THROW (makeScene ("cube", o), std::invalid_argument);
+  o.scale = 1.0;
+  o.noise = std::nan ("");
+  EXPECT_THROW (makeScene ("cube", o), std::invalid_argument);
+}
+
+/** Every scene at its default settings, one test per scene. */
+class DefaultScene : public ::testing::TestWithParam<std::string>
+{};
+
+TEST_P (DefaultScene, SizeLabelsAndPlaneCount)
+{
+  const std::string name = GetParam ();
+  const Scene scene = makeScene (name);
+  EXPECT_EQ (scene.name, name);
+  checkConsistent (scene, defaults ().at (name).first);
+  EXPECT_EQ (scene.num_planes, defaults ().at (name).second);
+}
+
+TEST_P (DefaultScene, ExactRequestedCount)
+{
+  SceneOptions o;
+  o.num_points = 12345;
+  o.outlier_ratio = 0.1;
+  const Scene scene = makeScene (GetParam (), o);
+  checkConsistent (scene, 12345);
+  // round (0.1 * 12345) outliers; sparse room planes may add to them.
+  EXPECT_GE (countKind (scene, SurfaceKind::Outlier), 1235u);
+}
+
+TEST_P (DefaultScene, SameSeedSameSceneOtherSeedOtherScene)
+{
+  SceneOptions o;
+  o.num_points = 20000;
+  o.seed = 7;
+  o.random_rotation = true;
+  const Scene a = makeScene (GetParam (), o);
+  const Scene b = makeScene (GetParam (), o);
+  EXPECT_TRUE (sameCloud (a, b));
+  EXPECT_EQ (a.labels, b.labels);
+  EXPECT_TRUE (a.kinds == b.kinds);
+  EXPECT_EQ (a.num_planes, b.num_planes);
+
+  o.seed = 8;
+  const Scene c = makeScene (GetParam (), o);
+  EXPECT_FALSE (sameCloud (a, c));
+}
+
+INSTANTIATE_TEST_SUITE_P (AllScenes, DefaultScene,
+                          ::testing::Values ("cube", "room", "staircase", "facade", "industrial",
+                                             "plane"));
+
+TEST (SyntheticScenes, CubeSamplesLieOnTheirFace)
+{
+  SceneOptions o;
+  o.noise = 0.01;
+  const Scene scene = makeScene ("cube", o);
+  ASSERT_EQ (scene.num_planes, 6);
+  // Identify each label's face from its mean: one coordinate sits at +-0.5.
+  std::vector<Eigen::Vector3d> mean (7, Eigen::Vector3d::Zero ());
+  std::vector<std::size_t> count (7, 0);
+  for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+  {
+    mean[scene.labels[i]] += scene.cloud[i].getVector3fMap ().cast<double> ();
+    ++count[scene.labels[i]];
+  }
+  std::vector<std::pair<int, double>> face (7);  // axis, side
+  for (int l = 1; l <= 6; ++l)
+  {
+    mean[l] /= static_cast<double> (count[l]);
+    int axis = 0;
+    mean[l].cwiseAbs ().maxCoeff (&axis);
+    face[l] = {axis, mean[l][axis] > 0.0 ? 0.5 : -0.5};
+    EXPECT_NEAR (std::abs (mean[l][axis]), 0.5, 0.002) << l;
+    // Uniform area sampling: each face gets a sixth of the points.
+    EXPECT_NEAR (static_cast<double> (count[l]), scene.cloud.size () / 6.0, 1.0);
+  }
+  std::vector<bool> seen (6, false);
+  for (int l = 1; l <= 6; ++l)
+    seen[2 * face[l].first + (face[l].second > 0.0)] = true;
+  EXPECT_EQ (std::count (seen.begin (), seen.end (), true), 6);
+
+  double sq = 0.0;
+  for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+  {
+    const auto [axis, side] = face[scene.labels[i]];
+    const double d = scene.cloud[i].getVector3fMap ()[axis] - side;
+    ASSERT_LT (std::abs (d), 5.0 * o.noise) << i;
+    sq += d * d;
+    // In-face coordinates stay within the face.
+    for (int k = 0; k < 3; ++k)
+    {
+      if (k != axis)
+      {
+        ASSERT_LE (std::abs (scene.cloud[i].getVector3fMap ()[k]), 0.5f + 1e-6f);
+      }
+    }
+  }
+  EXPECT_NEAR (std::sqrt (sq / scene.cloud.size ()), o.noise, 0.05 * o.noise);
+}
+
+TEST (SyntheticScenes, NoiseFreePlaneIsExact)
+{
+  const Scene scene = makeScene ("plane");
+  for (const auto& p : scene.cloud)
+  {
+    ASSERT_EQ (p.z, 0.0f);
+    ASSERT_LE (std::abs (p.x), 0.5f);
+    ASSERT_LE (std::abs (p.y), 0.5f);
+  }
+}
+
+TEST (SyntheticScenes, ScaleAndOffset)
+{
+  SceneOptions o;
+  o.num_points = 5000;
+  o.seed = 3;
+  const Scene base = makeScene ("staircase", o);
+  o.scale = 1000.0;
+  o.offset = Eigen::Vector3d (100.0, -200.0, 3000.0);
+  const Scene moved = makeScene ("staircase", o);
+  ASSERT_EQ (moved.cloud.size (), base.cloud.size ());
+  EXPECT_EQ (moved.labels, base.labels);
+  for (std::size_t i = 0; i < base.cloud.size (); ++i)
+  {
+    const Eigen::Vector3d expect =
+      1000.0 * base.cloud[i].getVector3fMap ().cast<double> () + o.offset;
+    // Float rounding of the unscaled cloud, magnified by the scale.
+    ASSERT_LT ((moved.cloud[i].getVector3fMap ().cast<double> () - expect).norm (), 1e-3) << i;
+  }
+}
+
+TEST (SyntheticScenes, RotationIsRigidAboutTheCentre)
+{
+  SceneOptions o;
+  o.num_points = 2000;
+  const Scene base = makeScene ("cube", o);
+  o.random_rotation = true;
+  const Scene rotated = makeScene ("cube", o);
+  ASSERT_EQ (rotated.cloud.size (), base.cloud.size ());
+  EXPECT_FALSE (sameCloud (base, rotated));
+  EXPECT_EQ (rotated.labels, base.labels);
+  // The cube is centred on the origin: distances to it and between points are preserved.
+  for (std::size_t i = 0; i + 1 < base.cloud.size (); ++i)
+  {
+    const Eigen::Vector3f a = base.cloud[i].getVector3fMap ();
+    const Eigen::Vector3f b = base.cloud[i + 1].getVector3fMap ();
+    const Eigen::Vector3f ra = rotated.cloud[i].getVector3fMap ();
+    const Eigen::Vector3f rb = rotated.cloud[i + 1].getVector3fMap ();
+    ASSERT_NEAR (a.norm (), ra.norm (), 1e-5f);
+    ASSERT_NEAR ((a - b).norm (), (ra - rb).norm (), 1e-5f);
+  }
+  // Another seed gives another rotation.
+  o.seed = 2;
+  const Scene other = makeScene ("cube", o);
+  EXPECT_FALSE (sameCloud (rotated, other));
+}
+
+TEST (SyntheticScenes, ShuffleOnlyReordersTheSamples)
+{
+  SceneOptions o;
+  o.num_points = 3000;
+  o.shuffle = false;
+  const Scene ordered = makeScene ("staircase", o);
+  // Generation order goes surface by surface, i.e. by label.
+  EXPECT_TRUE (std::is_sorted (ordered.labels.begin (), ordered.labels.end ()));
+  o.shuffle = true;
+  const Scene shuffled = makeScene ("staircase", o);
+  EXPECT_FALSE (std::is_sorted (shuffled.labels.begin (), shuffled.labels.end ()));
+
+  using Row = std::tuple<float, float, float, std::uint32_t>;
+  auto rows = [] (const Scene& s) {
+    std::vector<Row> r;
+    for (std::size_t i = 0; i < s.cloud.size (); ++i)
+      r.emplace_back (s.cloud[i].x, s.cloud[i].y, s.cloud[i].z, s.labels[i]);
+    std::sort (r.begin (), r.end ());
+    return r;
+  };
+  EXPECT_EQ (rows (ordered), rows (shuffled));
+}
+
+TEST (SyntheticScenes, CurvedSurfacesInRoomAndIndustrial)
+{
+  for (const char* name : {"room", "industrial"})
+  {
+    SceneOptions o;
+    o.num_points = 50000;
+    const Scene scene = makeScene (name, o);
+    const std::size_t curved = countKind (scene, SurfaceKind::Curved);
+    EXPECT_GT (curved, scene.cloud.size () / 100) << name;
+    for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+    {
+      if (scene.kinds[i] == SurfaceKind::Curved)
+      {
+        ASSERT_EQ (scene.labels[i], 0u) << name;
+      }
+    }
+  }
+}
+
+TEST (SyntheticScenes, FacadeOutlierShare)
+{
+  const Scene scene = makeScene ("facade");
+  const double share = static_cast<double> (countKind (scene, SurfaceKind::Outlier)) /
+                       static_cast<double> (scene.cloud.size ());
+  EXPECT_NEAR (share, 0.15, 0.001);
+  EXPECT_EQ (countKind (scene, SurfaceKind::Curved), 0u);
+  for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+  {
+    if (scene.kinds[i] == SurfaceKind::Outlier)
+    {
+      ASSERT_EQ (scene.labels[i], 0u);
+    }
+  }
+
+  // The ratio can be changed, including to none.
+  SceneOptions o;
+  o.num_points = 10000;
+  o.outlier_ratio = 0.0;
+  EXPECT_EQ (countKind (makeScene ("facade", o), SurfaceKind::Outlier), 0u);
+  o.outlier_ratio = 0.3;
+  EXPECT_EQ (countKind (makeScene ("facade", o), SurfaceKind::Outlier), 3000u);
+}
+
+TEST (SyntheticScenes, RoomIsASingleScan)
+{
+  SceneOptions o;
+  o.num_points = 50000;
+  const Scene scene = makeScene ("room", o);
+  const Eigen::Vector3f sensor = scene.cloud.sensor_origin_.head<3> ();
+  EXPECT_TRUE (sensor.isApprox (Eigen::Vector3f (1.5f, 1.5f, 1.6f)));
+
+  std::size_t near = 0, far = 0, behind_cabinet = 0;
+  for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+  {
+    const Eigen::Vector3f p = scene.cloud[i].getVector3fMap ();
+    // Everything lies inside the room, up to noise.
+    ASSERT_TRUE ((p.array () > -0.05f).all () && p.x () < 6.05f && p.y () < 5.05f &&
+                 p.z () < 3.05f) << i;
+    // Floor density near the sensor versus in the far corner (same 1 x 1 m area).
+    if (std::abs (p.z ()) < 0.03f)
+    {
+      if (p.x () > 1.0f && p.x () < 2.0f && p.y () > 1.0f && p.y () < 2.0f)
+        ++near;
+      if (p.x () > 4.0f && p.x () < 5.0f && p.y () > 3.5f && p.y () < 4.5f)
+        ++far;
+    }
+    // The wall y = 0 behind the cabinet (x 3.0 - 3.8, height 1.0) is occluded.
+    if (p.y () < 0.03f && p.x () > 3.05f && p.x () < 3.75f && p.z () < 0.95f)
+      ++behind_cabinet;
+  }
+  EXPECT_GT (near, 5 * far);
+  EXPECT_EQ (behind_cabinet, 0u);
+}
+
+TEST (SyntheticScenes, SmallRoomDropsSparsePlanesConsistently)
+{
+  // With few rays some small planes fall under the threshold; labels must stay consecutive.
+  SceneOptions o;
+  o.num_points = 3000;
+  const Scene scene = makeScene ("room", o);
+  checkConsistent (scene, 3000);
+  EXPECT_GE (scene.num_planes, 6);
+  EXPECT_LE (scene.num_planes, 12);
+}
