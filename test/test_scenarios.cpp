@@ -1,0 +1,181 @@
+/*
+ * Scenario tests: generated scenes with per-point truth, scored by the paper's voxel metric
+ * (Sec. 4.2), and the ../shared benchmark clouds where present. Floors are set a little below what
+ * the faithful method measures (see README); a regression in any phase shows up here.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/plane_evaluation.h>
+#include <pcl_rspd/robust_plane_segmentation.h>
+#include <pcl_rspd/synthetic_scenes.h>
+
+#include <pcl/io/pcd_io.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sys/stat.h>
+
+namespace
+{
+struct Detection
+{
+  pcl::rspd::EvaluationResult score;
+  double curved_claimed = 0.0; ///< share of Curved samples labelled as a plane
+  std::vector<std::uint32_t> labels;
+};
+
+Detection
+detect (const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<std::uint32_t>& truth,
+        const std::vector<pcl::rspd::SurfaceKind>* kinds = nullptr)
+{
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (std::make_shared<pcl::PointCloud<pcl::PointXYZ>> (cloud));
+  pcl::PointCloud<pcl::Label> labels;
+  seg.getLabels (labels);
+  Detection run;
+  for (const auto& l : labels)
+    run.labels.push_back (l.label);
+  run.score = pcl::rspd::evaluatePlaneDetection (cloud, truth, run.labels);
+  if (kinds)
+  {
+    std::size_t curved = 0, claimed = 0;
+    for (std::size_t i = 0; i < kinds->size (); ++i)
+      if ((*kinds)[i] == pcl::rspd::SurfaceKind::Curved)
+      {
+        ++curved;
+        claimed += run.labels[i] != 0;
+      }
+    run.curved_claimed = curved ? static_cast<double> (claimed) / curved : 0.0;
+  }
+  std::printf ("    F1 %.3f  P %.3f  R %.3f  found %d/%d  detected %d  fragments %d  false %d  curved claimed %.1f %%\n",
+               run.score.f1, run.score.precision, run.score.recall, run.score.found, run.score.planes,
+               run.score.detected, run.score.fragments, run.score.false_planes, 100.0 * run.curved_claimed);
+  return run;
+}
+
+Detection
+detectScene (const std::string& name, const pcl::rspd::SceneOptions& options = {})
+{
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene (name, options);
+  std::printf ("    %s: %zu points, %d planes\n", name.c_str (), scene.cloud.size (), scene.num_planes);
+  return detect (scene.cloud, scene.labels, &scene.kinds);
+}
+
+bool
+loadShared (const std::string& name, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<std::uint32_t>& truth)
+{
+  const std::string base = std::string (PCL_RSPD_SHARED_DATA_DIR) + "/" + name;
+  struct stat st;
+  if (stat ((base + ".pcd").c_str (), &st) != 0 || stat ((base + ".gt").c_str (), &st) != 0)
+    return false;
+  if (pcl::io::loadPCDFile (base + ".pcd", cloud) != 0)
+    return false;
+  truth.resize (cloud.size ());
+  std::ifstream in (base + ".gt", std::ios::binary);
+  in.read (reinterpret_cast<char*> (truth.data ()), static_cast<std::streamsize> (truth.size () * 4));
+  return static_cast<std::size_t> (in.gcount ()) == truth.size () * 4;
+}
+} // namespace
+
+TEST (Scenario, NoisyCubeEveryFaceFound)
+{
+  // 1 m cube, σ = 1 % of the edge.
+  const Detection r = detectScene ("cube");
+  EXPECT_EQ (r.score.found, 6);
+  EXPECT_EQ (r.score.false_planes, 0);
+  EXPECT_GE (r.score.f1, 0.93);
+}
+
+TEST (Scenario, NoiseFreePlaneIsOnePlaneHoldingEveryPoint)
+{
+  const Detection r = detectScene ("plane");
+  EXPECT_EQ (r.score.detected, 1);
+  std::size_t labelled = 0;
+  for (const auto l : r.labels)
+    labelled += l == 1;
+  EXPECT_GE (labelled, r.labels.size () * 99 / 100);
+}
+
+TEST (Scenario, StaircaseOfSmallParallelPlanes)
+{
+  // 15 treads and 15 risers. The faithful split seeds a riser only where some octree cell holds
+  // ε samples of it alone: 22 of 30 today (an open limitation; see README).
+  const Detection r = detectScene ("staircase");
+  EXPECT_GE (r.score.found, 21);
+  EXPECT_EQ (r.score.false_planes, 0);
+  EXPECT_GE (r.score.f1, 0.80);
+}
+
+TEST (Scenario, RoomWithFurnitureDoorAndCurvedClutter)
+{
+  // One viewpoint, density falling with distance; a door 2 cm proud of a wall; a pillar and a ball.
+  const Detection r = detectScene ("room");
+  EXPECT_GE (r.score.found, 7);
+  EXPECT_GE (r.score.f1, 0.90);
+  EXPECT_LE (r.curved_claimed, 0.05);
+}
+
+TEST (Scenario, NoisyFacadeWithOutliersAndRecessedWindows)
+{
+  const Detection r = detectScene ("facade");
+  EXPECT_EQ (r.score.found, 16);
+  EXPECT_GE (r.score.f1, 0.97);
+}
+
+TEST (Scenario, IndustrialPipesAndTanksReported)
+{
+  // Curved surfaces becoming planes is the paper's stated limitation (Sec. 5); recorded here so
+  // that improvements show, with a floor against regressions.
+  const Detection r = detectScene ("industrial");
+  EXPECT_GE (r.score.found, 4);
+  EXPECT_GE (r.score.f1, 0.75);
+}
+
+TEST (Scenario, ScaledAndShiftedSceneGivesTheSameScore)
+{
+  const Detection base = detectScene ("facade");
+  pcl::rspd::SceneOptions mm;
+  mm.scale = 1000.0;
+  const Detection scaled = detectScene ("facade", mm);
+  pcl::rspd::SceneOptions far;
+  far.offset = Eigen::Vector3d (1000.0, 1000.0, 0.0);
+  const Detection shifted = detectScene ("facade", far);
+  EXPECT_NEAR (scaled.score.f1, base.score.f1, 0.01);
+  EXPECT_NEAR (shifted.score.f1, base.score.f1, 0.01);
+  EXPECT_EQ (scaled.score.found, base.score.found);
+  EXPECT_EQ (shifted.score.found, base.score.found);
+}
+
+TEST (SharedData, SynPebTest100)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  std::vector<std::uint32_t> truth;
+  if (!loadShared ("synpeb_test100", cloud, truth))
+    GTEST_SKIP () << "../shared/data not present";
+  const Detection r = detect (cloud, truth);
+  EXPECT_GE (r.score.found, 7);
+  EXPECT_GE (r.score.f1, 0.75);
+}
+
+TEST (SharedData, SynPebPc01)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  std::vector<std::uint32_t> truth;
+  if (!loadShared ("synpeb_pc01", cloud, truth))
+    GTEST_SKIP () << "../shared/data not present";
+  // Noisy (1 cm RMS), 60 mostly small planes: the faithful method finds few (the authors' code
+  // finds 10). A floor against regressions; issue 6 is about raising it.
+  const Detection r = detect (cloud, truth);
+  EXPECT_GE (r.score.found, 10);
+  EXPECT_GE (r.score.f1, 0.33);
+}
+
+TEST (SharedData, CgalBuildingPseudoTruth)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  std::vector<std::uint32_t> truth;
+  if (!loadShared ("cgal_building", cloud, truth))
+    GTEST_SKIP () << "../shared/data not present";
+  const Detection r = detect (cloud, truth); // pseudo ground truth: a smoke test, not a score to chase
+  EXPECT_GE (r.score.found, 10);
+}
