@@ -10,6 +10,7 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <chrono>
 
 namespace pcl
 {
@@ -46,11 +47,18 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   result.clear ();
   DetectorStatistics local;
   DetectorStatistics& st = stats ? *stats : local;
+  const double graph_seconds = st.graph_seconds, normals_seconds = st.normals_seconds;
   st = DetectorStatistics ();
+  st.graph_seconds = graph_seconds;
+  st.normals_seconds = normals_seconds;
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now ();
 
   // Split (Sec. 3.1).
   std::vector<PlanarPatch> patches = splitPhase (points, params, &st);
   std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
+  const auto t1 = Clock::now ();
+  st.split_seconds = std::chrono::duration<double> (t1 - t0).count ();
 
   // Grow and merge until no patch needs an update (Sec. 3.3-3.5).
   for (;;)
@@ -70,6 +78,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     if (updated == 0)
       break;
   }
+
+  st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();
 
   // Largest first, ties by lowest member index.
   std::sort (patches.begin (), patches.end (), [] (const PlanarPatch& a, const PlanarPatch& b) {

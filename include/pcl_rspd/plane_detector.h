@@ -69,6 +69,10 @@ struct DetectorStatistics
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
   std::size_t merges = 0;            ///< patches absorbed by merging
   bool hit_iteration_cap = false;
+  double graph_seconds = 0.0;        ///< building the k-NN graph (wall time)
+  double normals_seconds = 0.0;      ///< estimating normals (0 when given)
+  double split_seconds = 0.0;        ///< split phase
+  double grow_merge_seconds = 0.0;   ///< grow-merge iterations
 };
 
 /** \brief Run split (Sec. 3.1), then grow (3.3) and merge (3.4) until stable (3.5).

@@ -17,6 +17,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -427,6 +428,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   const std::string class_name = getClassName ();
   const char* name = class_name.c_str ();
   const std::size_t n = points_.size ();
+  const auto t0 = std::chrono::steady_clock::now ();
   if (search_)
   {
     // The caller's search structure, over the valid samples only.
@@ -476,11 +478,14 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     PCL_ERROR ("[pcl::%s::segment] could not build the %d-nearest-neighbour graph\n", name, k_);
     return false;
   }
+  const auto t1 = std::chrono::steady_clock::now ();
+  stats_.graph_seconds = std::chrono::duration<double> (t1 - t0).count ();
   if (!normals_)
   {
     PCL_DEBUG ("[pcl::%s::segment] no normals given: estimating them by PCA over the %d-neighbourhoods\n",
                name, k_);
     pcl::rspd::estimateNormals (points_.points, graph_, params_.num_threads, points_.normals);
+    stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
   }
   return true;
 }
