@@ -1,0 +1,289 @@
+/*
+ * pcl_rspd tests: the rspd_compare command-line tool, run as a separate program.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/synthetic_scenes.h>
+
+#include <pcl/io/pcd_io.h>
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const std::string kCompare = std::string (PCL_RSPD_BINARY_DIR) + "/rspd_compare";
+
+/** \brief Exit status and output of one run. */
+struct RunResult
+{
+  int status = -1;  ///< exit status, or 128 + signal
+  std::string out;
+  std::string err;
+};
+
+/** \brief A temporary directory, removed with its files at the end of the test. */
+class ScratchDir
+{
+public:
+  ScratchDir ()
+  {
+    const char* tmp = std::getenv ("TMPDIR");
+    std::string pattern = std::string (tmp && *tmp ? tmp : "/tmp") + "/rspd_compare_test_XXXXXX";
+    std::vector<char> buffer (pattern.begin (), pattern.end ());
+    buffer.push_back ('\0');
+    if (::mkdtemp (buffer.data ()))
+      path_ = buffer.data ();
+  }
+  ~ScratchDir ()
+  {
+    for (const std::string& f : files_)
+      std::remove (f.c_str ());
+    if (!path_.empty ())
+      ::rmdir (path_.c_str ());
+  }
+  /** \brief Path of \a name inside the directory (removed at the end). */
+  std::string
+  file (const std::string& name)
+  {
+    files_.push_back (path_ + "/" + name);
+    return files_.back ();
+  }
+  bool
+  ok () const { return !path_.empty (); }
+
+private:
+  std::string path_;
+  std::vector<std::string> files_;
+};
+
+std::string
+shellQuote (const std::string& s)
+{
+  std::string q = "'";
+  for (const char c : s)
+    q += c == '\'' ? std::string ("'\\''") : std::string (1, c);
+  return q + "'";
+}
+
+std::string
+readWholeFile (const std::string& path)
+{
+  std::ifstream in (path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf ();
+  return ss.str ();
+}
+
+/** \brief Run rspd_compare with \a args (and optional VAR=value environment prefix). */
+RunResult
+runCompare (const std::vector<std::string>& args, const std::string& env = "")
+{
+  RunResult r;
+  ScratchDir dir;
+  if (!dir.ok ())
+    return r;
+  const std::string out = dir.file ("stdout"), err = dir.file ("stderr");
+  std::string cmd = env.empty () ? std::string () : env + " ";
+  cmd += shellQuote (kCompare);
+  for (const std::string& a : args)
+    cmd += " " + shellQuote (a);
+  cmd += " > " + shellQuote (out) + " 2> " + shellQuote (err);
+  const int status = std::system (cmd.c_str ());
+  r.status = WIFEXITED (status) ? WEXITSTATUS (status) : 128 + WTERMSIG (status);
+  r.out = readWholeFile (out);
+  r.err = readWholeFile (err);
+  return r;
+}
+
+/** \brief The table row of \a method split into words, empty if there is none. */
+std::vector<std::string>
+row (const std::string& out, const std::string& method)
+{
+  std::istringstream lines (out);
+  std::string line;
+  while (std::getline (lines, line))
+  {
+    std::istringstream words (line);
+    std::vector<std::string> w;
+    std::string word;
+    while (words >> word)
+      w.push_back (word);
+    if (!w.empty () && w[0] == method)
+      return w;
+  }
+  return {};
+}
+
+std::size_t
+countLines (const std::string& s)
+{
+  std::size_t n = 0;
+  for (const char c : s)
+    n += c == '\n';
+  return n;
+}
+
+/** \brief Skip unless the real tool is there (not absent, not a placeholder). */
+#define REQUIRE_COMPARE_BINARY()                                                               \
+  do                                                                                           \
+  {                                                                                            \
+    if (::access (kCompare.c_str (), X_OK) != 0)                                               \
+      GTEST_SKIP () << kCompare << " not built";                                               \
+    if (runCompare ({"--help"}).out.find ("usage:") == std::string::npos)                      \
+      GTEST_SKIP () << kCompare << " is not the real tool yet";                                \
+  } while (0)
+
+// Table columns with truth: method planes time peak start rms precision recall F1 found fragments false
+constexpr std::size_t kPlanes = 1, kF1 = 8, kFound = 9;
+} // namespace
+
+TEST (CompareCli, CubeSceneComparesThreeMethods)
+{
+  REQUIRE_COMPARE_BINARY ();
+  const RunResult r = runCompare ({"--scene", "cube", "-n", "20000"});
+  ASSERT_EQ (r.status, 0) << r.err;
+  // The header names the peer settings.
+  EXPECT_NE (r.out.find ("NormalEstimationOMP"), std::string::npos);
+  EXPECT_NE (r.out.find ("1 % of the largest extent"), std::string::npos);
+  EXPECT_NE (r.out.find ("smoothness 3 deg"), std::string::npos);
+  EXPECT_NE (r.out.find ("F1"), std::string::npos);
+  for (const char* method : {"rspd", "sac", "rg"})
+  {
+    const std::vector<std::string> w = row (r.out, method);
+    ASSERT_GT (w.size (), kFound) << "no complete row for " << method << " in:\n" << r.out;
+    const double f1 = std::stod (w[kF1]);
+    EXPECT_GE (f1, 0.0) << method;
+    EXPECT_LE (f1, 1.0) << method;
+    EXPECT_GT (f1, 0.5) << method << ": every method should find the cube's faces";
+  }
+  const std::vector<std::string> rspd = row (r.out, "rspd");
+  ASSERT_GT (rspd.size (), kFound);
+  EXPECT_EQ (rspd[kPlanes], "6");
+  EXPECT_EQ (rspd[kFound], "6/6");
+}
+
+TEST (CompareCli, JsonHasMethods)
+{
+  REQUIRE_COMPARE_BINARY ();
+  const RunResult r = runCompare ({"--scene", "cube", "-n", "5000", "--json"});
+  ASSERT_EQ (r.status, 0) << r.err;
+  ASSERT_FALSE (r.out.empty ());
+  EXPECT_EQ (r.out[0], '{');
+  EXPECT_EQ (countLines (r.out), 1u);
+  EXPECT_NE (r.out.find ("\"methods\": ["), std::string::npos);
+  EXPECT_NE (r.out.find ("\"normals_seconds\""), std::string::npos);
+  for (const char* method : {"rspd", "sac", "rg"})
+    EXPECT_NE (r.out.find (std::string ("\"name\": \"") + method + "\""), std::string::npos) << method;
+  EXPECT_NE (r.out.find ("\"f1\""), std::string::npos);
+  EXPECT_NE (r.out.find ("\"peak_mb\""), std::string::npos);
+}
+
+TEST (CompareCli, MethodSubsetInOrder)
+{
+  REQUIRE_COMPARE_BINARY ();
+  const RunResult r = runCompare ({"--scene", "cube", "-n", "5000", "--methods", "rg,rspd"});
+  ASSERT_EQ (r.status, 0) << r.err;
+  EXPECT_TRUE (row (r.out, "sac").empty ());
+  const std::size_t rg = r.out.find ("\nrg "), rspd = r.out.find ("\nrspd ");
+  ASSERT_NE (rg, std::string::npos);
+  ASSERT_NE (rspd, std::string::npos);
+  EXPECT_LT (rg, rspd);
+}
+
+TEST (CompareCli, KilledMethodIsReportedNotFatal)
+{
+  REQUIRE_COMPARE_BINARY ();
+  // Test hook: the child of the named method kills itself with SIGKILL, as an OOM kill would.
+  const RunResult r = runCompare ({"--scene", "cube", "-n", "5000", "--methods", "sac,rg"},
+                                  "RSPD_COMPARE_KILL_METHOD=sac");
+  ASSERT_EQ (r.status, 0) << r.err;
+  const std::vector<std::string> sac = row (r.out, "sac");
+  ASSERT_GE (sac.size (), 2u) << r.out;
+  EXPECT_EQ (sac[1], "failed:");
+  EXPECT_GT (row (r.out, "rg").size (), kFound) << r.out;
+}
+
+TEST (CompareCli, CloudFileWithTruth)
+{
+  REQUIRE_COMPARE_BINARY ();
+  ScratchDir dir;
+  ASSERT_TRUE (dir.ok ());
+  pcl::rspd::SceneOptions options;
+  options.num_points = 3000;
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene ("cube", options);
+  const std::string cloud = dir.file ("cube.pcd"), truth = dir.file ("cube.gt"), short_truth = dir.file ("short.gt");
+  ASSERT_EQ (pcl::io::savePCDFileBinary (cloud, scene.cloud), 0);
+  const auto writeLabels = [] (const std::string& path, const std::vector<std::uint32_t>& labels) {
+    std::ofstream out (path, std::ios::binary);
+    for (const std::uint32_t l : labels)
+    {
+      const unsigned char b[4] = {static_cast<unsigned char> (l), static_cast<unsigned char> (l >> 8),
+                                  static_cast<unsigned char> (l >> 16), static_cast<unsigned char> (l >> 24)};
+      out.write (reinterpret_cast<const char*> (b), 4);
+    }
+  };
+  writeLabels (truth, scene.labels);
+  writeLabels (short_truth, std::vector<std::uint32_t> (scene.labels.begin (), scene.labels.end () - 1));
+
+  const RunResult good = runCompare ({cloud, truth, "--methods", "rspd"});
+  ASSERT_EQ (good.status, 0) << good.err;
+  const std::vector<std::string> rspd = row (good.out, "rspd");
+  ASSERT_GT (rspd.size (), kFound) << good.out;
+  EXPECT_EQ (rspd[kFound], "6/6");
+
+  // Without truth there are no scores, but the run still succeeds.
+  const RunResult no_truth = runCompare ({cloud, "--methods", "rg"});
+  ASSERT_EQ (no_truth.status, 0) << no_truth.err;
+  EXPECT_EQ (no_truth.out.find ("precision"), std::string::npos);
+
+  const RunResult mismatch = runCompare ({cloud, short_truth});
+  EXPECT_EQ (mismatch.status, 1);
+  EXPECT_EQ (countLines (mismatch.err), 1u) << mismatch.err;
+  EXPECT_TRUE (mismatch.out.empty ());
+}
+
+TEST (CompareCli, MissingFileExitsOne)
+{
+  REQUIRE_COMPARE_BINARY ();
+  const RunResult r = runCompare ({"/nonexistent/cloud.pcd"});
+  EXPECT_EQ (r.status, 1);
+  EXPECT_EQ (countLines (r.err), 1u) << r.err;
+  EXPECT_NE (r.err.find ("/nonexistent/cloud.pcd"), std::string::npos);
+  EXPECT_TRUE (r.out.empty ());
+}
+
+TEST (CompareCli, UsageErrorsExitTwo)
+{
+  REQUIRE_COMPARE_BINARY ();
+  const std::vector<std::vector<std::string>> bad = {
+      {},                                            // no input
+      {"--scene", "no-such-scene"},                  // unknown scene
+      {"--scene", "cube", "extra.pcd"},              // scene and file
+      {"a.pcd", "--methods", "rspd,magic"},          // unknown method
+      {"a.pcd", "--methods", "rg,rg"},               // duplicate method
+      {"a.pcd", "-k", "zero"},                       // bad number
+      {"a.pcd", "--voxel", "-1"},                    // bad voxel
+      {"a.pcd", "-n", "100"},                        // -n without --scene
+      {"a.pcd", "b.gt", "c.gt"},                     // too many files
+      {"a.pcd", "--frobnicate"},                     // unknown option
+  };
+  for (const auto& args : bad)
+  {
+    const RunResult r = runCompare (args);
+    std::string joined;
+    for (const auto& a : args)
+      joined += a + " ";
+    EXPECT_EQ (r.status, 2) << joined;
+    EXPECT_EQ (countLines (r.err), 1u) << joined << ": " << r.err;
+  }
+}
