@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -12,19 +13,29 @@ namespace pcl
 {
 namespace rspd
 {
-/** \brief RGB colour of plane \a label: grey (128, 128, 128) for 0 (no plane), otherwise hues
-  * spread by the golden angle so that neighbouring labels differ, at two saturation/value levels. */
+/** \brief RGB colour of plane \a label.
+  *
+  * Label 0 (no plane) is grey (128, 128, 128). Plane labels walk the hue circle by the golden
+  * angle, so consecutive labels (the largest planes) are far apart in hue, while saturation and
+  * value cycle with co-prime periods to tell apart hues that come close again after many labels.
+  * Deterministic, no random numbers.
+  */
 inline std::array<std::uint8_t, 3>
 planeColor (std::uint32_t label)
 {
   if (label == 0)
     return {128, 128, 128};
-  const double hue = std::fmod (static_cast<double> (label - 1) * 137.50776405, 360.0) / 60.0;
-  const double s = (label % 2) ? 0.85 : 0.65;
-  const double v = (label % 3 == 0) ? 0.75 : 0.95;
-  const int sector = static_cast<int> (hue) % 6;
-  const double f = hue - std::floor (hue);
-  const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+  const std::uint32_t i = label - 1;
+  double h = 0.02 + 0.6180339887498949 * static_cast<double> (i); // start at a warm red
+  h -= std::floor (h);
+  static const double saturations[2] = {0.85, 0.6};
+  static const double values[3] = {0.95, 0.78, 0.62};
+  const double s = saturations[i % 2];
+  const double v = values[(i / 2) % 3];
+  const double h6 = h * 6.0;
+  const int sector = static_cast<int> (h6) % 6;
+  const double f = h6 - std::floor (h6);
+  const double p = v * (1.0 - s), q = v * (1.0 - s * f), t = v * (1.0 - s * (1.0 - f));
   double r = v, g = t, b = p;
   switch (sector)
   {
@@ -35,8 +46,10 @@ planeColor (std::uint32_t label)
     case 5: r = v; g = p; b = q; break;
     default: break;
   }
-  return {static_cast<std::uint8_t> (std::lround (255 * r)), static_cast<std::uint8_t> (std::lround (255 * g)),
-          static_cast<std::uint8_t> (std::lround (255 * b))};
+  const auto to_byte = [] (double c) {
+    return static_cast<std::uint8_t> (std::min (255.0, std::max (0.0, std::round (c * 255.0))));
+  };
+  return {to_byte (r), to_byte (g), to_byte (b)};
 }
 
 } // namespace rspd

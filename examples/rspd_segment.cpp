@@ -1,0 +1,391 @@
+/*
+ * rspd_segment: detect every plane of a point cloud file with pcl::RobustPlaneSegmentation and
+ * write the labelled cloud, a CSV of the planes and a picture.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "cloud_io.h"
+#include "render_png.h"
+
+#include <pcl_rspd/robust_plane_segmentation.h>
+#include <pcl_rspd/synthetic_scenes.h>
+
+#include <pcl/console/print.h>
+
+#include <charconv>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* const kUsage =
+    "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
+    " [--png-size WxH] [-k 50] [--threads N] [-v]";
+
+const char* const kHelp =
+    "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
+    "\n"
+    "  INPUT            .pcd (ascii, binary, binary_compressed) or .ply; normal_x/y/z are used if present\n"
+    "  --demo           run on the built-in synthetic room (also the default without INPUT);\n"
+    "                   writes nothing unless an output is asked for\n"
+    "  -o OUT.pcd       binary PCD: every input point and field, plus uint32 'label' (0 = no plane,\n"
+    "                   1..K by decreasing size) and a colour 'rgb' per plane\n"
+    "  --planes OUT.csv one row per plane: label,a,b,c,d,points,cx,cy,cz,extent_u,extent_v,mdp,mnd\n"
+    "  --png OUT.png    two views of the labelled cloud, from above and from below\n"
+    "                   (--png-size WxH, default 1600x800)\n"
+    "  -k N             neighbours per point for normals and the growth graph (default 50)\n"
+    "  --threads N      OpenMP threads (default: OpenMP's default, OMP_NUM_THREADS is honoured)\n"
+    "  -v               progress and per-stage timings on stderr\n"
+    "\n"
+    "Exit status: 0 success, 1 bad input or output, 2 usage error.\n";
+
+/** \brief Command line. */
+struct Options
+{
+  std::string input;
+  bool demo = false;
+  std::string output;
+  std::string planes_csv;
+  std::string png;
+  int png_width = 1600;
+  int png_height = 800;
+  int k = 50;
+  int threads = 0;  // 0: leave OpenMP's default
+  bool verbose = false;
+  bool help = false;
+};
+
+/** \brief A usage error: message for stderr, exit status 2. */
+struct UsageError
+{
+  std::string message;
+};
+
+/** \brief Strict decimal integer: the whole string, no overflow. */
+bool
+parseInt (const std::string& s, int& value)
+{
+  const char* end = s.data () + s.size ();
+  const auto r = std::from_chars (s.data (), end, value);
+  return !s.empty () && r.ec == std::errc () && r.ptr == end;
+}
+
+/** \brief Parse the command line. \throws UsageError */
+Options
+parseArguments (int argc, char** argv)
+{
+  Options o;
+  bool positional_only = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    if (positional_only || arg.empty () || arg[0] != '-' || arg == "-")
+    {
+      if (!o.input.empty ())
+        throw UsageError{"more than one input file ('" + o.input + "' and '" + arg + "')"};
+      o.input = arg;
+      continue;
+    }
+    if (arg == "--")
+    {
+      positional_only = true;
+      continue;
+    }
+    // --name=value is accepted as well as --name value.
+    std::string inline_value;
+    bool has_inline = false;
+    if (arg.compare (0, 2, "--") == 0)
+    {
+      const std::size_t eq = arg.find ('=');
+      if (eq != std::string::npos)
+      {
+        inline_value = arg.substr (eq + 1);
+        arg = arg.substr (0, eq);
+        has_inline = true;
+      }
+    }
+    const auto value = [&] () -> std::string {
+      if (has_inline)
+        return inline_value;
+      if (i + 1 >= argc)
+        throw UsageError{"option " + arg + " needs a value"};
+      return argv[++i];
+    };
+    const auto no_value = [&] () {
+      if (has_inline)
+        throw UsageError{"option " + arg + " takes no value"};
+    };
+    if (arg == "-h" || arg == "--help")
+    {
+      no_value ();
+      o.help = true;
+    }
+    else if (arg == "--demo")
+    {
+      no_value ();
+      o.demo = true;
+    }
+    else if (arg == "-v" || arg == "--verbose")
+    {
+      no_value ();
+      o.verbose = true;
+    }
+    else if (arg == "-o" || arg == "--output")
+      o.output = value ();
+    else if (arg == "--planes")
+      o.planes_csv = value ();
+    else if (arg == "--png")
+      o.png = value ();
+    else if (arg == "--png-size")
+    {
+      const std::string v = value ();
+      const std::size_t x = v.find ('x');
+      if (x == std::string::npos || !parseInt (v.substr (0, x), o.png_width) ||
+          !parseInt (v.substr (x + 1), o.png_height) || o.png_width < 16 || o.png_height < 16 ||
+          o.png_width > 16384 || o.png_height > 16384)
+        throw UsageError{"--png-size needs WIDTHxHEIGHT, each 16..16384 (got '" + v + "')"};
+    }
+    else if (arg == "-k" || arg == "--neighbours" || arg == "--neighbors")
+    {
+      const std::string v = value ();
+      if (!parseInt (v, o.k) || o.k < 3 || o.k > 1000)
+        throw UsageError{"-k needs an integer from 3 to 1000 (got '" + v + "')"};
+    }
+    else if (arg == "--threads" || arg == "-t")
+    {
+      const std::string v = value ();
+      if (!parseInt (v, o.threads) || o.threads < 1 || o.threads > 1024)
+        throw UsageError{"--threads needs an integer from 1 to 1024 (got '" + v + "')"};
+    }
+    else
+      throw UsageError{"unknown option '" + arg + "'"};
+  }
+  if (o.demo && !o.input.empty ())
+    throw UsageError{"give either INPUT or --demo, not both"};
+  if (o.input.empty ())
+    o.demo = true;
+  // The labelled cloud may replace its input (it is written atomically), a CSV or PNG may not.
+  for (const std::string* out : {&o.planes_csv, &o.png})
+    if (!out->empty () && *out == o.input)
+      throw UsageError{"'" + *out + "' is the input file; refusing to overwrite it with a CSV or PNG"};
+  return o;
+}
+
+/** \brief Seconds since \a start. */
+double
+secondsSince (const std::chrono::steady_clock::time_point& start)
+{
+  return std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+}
+
+/** \brief The plane's [a b c d], from the coefficients or, failing that, from normal and centre. */
+Eigen::Vector4d
+planeOf (const pcl::RobustPlane& p)
+{
+  if (p.coefficients.values.size () >= 4)
+    return Eigen::Vector4d (p.coefficients.values[0], p.coefficients.values[1], p.coefficients.values[2],
+                            p.coefficients.values[3]);
+  return Eigen::Vector4d (p.normal.x (), p.normal.y (), p.normal.z (), -p.normal.dot (p.center));
+}
+
+/** \brief The --planes table: one row per plane, label i = i-th plane (largest first). */
+std::string
+planesCsv (const std::vector<pcl::RobustPlane>& planes)
+{
+  std::string csv = "label,a,b,c,d,points,cx,cy,cz,extent_u,extent_v,mdp,mnd\n";
+  char line[512];
+  for (std::size_t i = 0; i < planes.size (); ++i)
+  {
+    const pcl::RobustPlane& p = planes[i];
+    const Eigen::Vector4d c = planeOf (p);
+    std::snprintf (line, sizeof (line), "%zu,%.9g,%.9g,%.9g,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", i + 1,
+                   c[0], c[1], c[2], c[3], p.indices.indices.size (), p.centroid.x (), p.centroid.y (),
+                   p.centroid.z (), p.rect_size[0], p.rect_size[1], p.mdp, p.mnd);
+    csv += line;
+  }
+  return csv;
+}
+
+/** \brief Report a bad input or output on one line of stderr. \return exit status 1 */
+int
+fail (const std::string& message)
+{
+  std::fprintf (stderr, "rspd_segment: error: %s\n", message.c_str ());
+  return 1;
+}
+
+/** \brief Read (or generate), detect, summarise, write. \return exit status */
+int
+run (const Options& o)
+{
+  const auto log = [&] (const char* format, auto... args) {
+    if (o.verbose)
+    {
+      std::fprintf (stderr, "[rspd_segment] ");
+      std::fprintf (stderr, format, args...);
+      std::fputc ('\n', stderr);
+    }
+  };
+  std::string error;
+
+  // Fail before the (possibly long) detection if an output cannot be written.
+  for (const std::string* out : {&o.output, &o.planes_csv, &o.png})
+    if (!out->empty () && !rspd_tools::checkWritable (*out, error))
+      return fail (error);
+
+  // --- read
+  auto t0 = std::chrono::steady_clock::now ();
+  rspd_tools::LoadedCloud cloud;
+  std::string source;
+  if (o.demo)
+  {
+    log ("generating the demo scene 'room'");
+    pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", pcl::rspd::SceneOptions ());
+    rspd_tools::makeLoadedCloud (scene.cloud, cloud);
+    source = "demo scene 'room' (" + std::to_string (scene.num_planes) + " planes in the ground truth)";
+  }
+  else
+  {
+    log ("reading %s", o.input.c_str ());
+    if (!rspd_tools::loadCloud (o.input, cloud, error))
+      return fail (error);
+    source = o.input + " (" + cloud.format;
+    if (cloud.blob.height > 1)
+      source += ", organized " + std::to_string (cloud.blob.width) + "x" + std::to_string (cloud.blob.height);
+    if (cloud.normals)
+      source += ", with normals";
+    source += ")";
+  }
+  const double t_read = secondsSince (t0);
+  const std::size_t n = cloud.size ();
+  const std::size_t valid = rspd_tools::countFinite (*cloud.xyz);
+  log ("read: %.3f s, %zu points, %zu finite", t_read, n, valid);
+  if (n == 0)
+    return fail ((o.demo ? std::string ("demo scene") : o.input) + ": the cloud has no points");
+  if (valid == 0)
+    return fail ((o.demo ? std::string ("demo scene") : o.input) + ": the cloud has no point with finite x, y and z");
+
+  // --- detect: the class runs normals, graph, split and grow/merge internally; timed as one stage.
+  t0 = std::chrono::steady_clock::now ();
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ, pcl::Normal> seg;
+  seg.setInputCloud (cloud.xyz);
+  if (cloud.normals)
+    seg.setInputNormals (cloud.normals);
+  seg.setNumberOfNeighbours (o.k);
+  if (o.threads > 0)
+    seg.setNumberOfThreads (static_cast<unsigned int> (o.threads));
+  log ("detecting planes (k = %d, %s threads, %s normals)", o.k,
+       o.threads > 0 ? std::to_string (o.threads).c_str () : "default", cloud.normals ? "file" : "estimated");
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> indices;
+  seg.segment (coefficients, indices);
+  if (!seg.hasResult ())
+    return fail ("plane detection failed on " + std::to_string (valid) + " finite points" +
+                 (o.verbose ? std::string () : std::string (" (run with -v for details)")));
+  const std::vector<pcl::RobustPlane>& planes = seg.getPlanes ();
+  const double t_detect = secondsSince (t0);
+  const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
+  log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %d grow-merge iterations,"
+       " %zu re-estimations, %zu merges%s)",
+       t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
+       stats.iterations, stats.reestimations, stats.merges, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+
+  // Label i = i-th plane; the class returns planes largest first.
+  std::vector<std::uint32_t> labels (n, 0);
+  std::size_t assigned = 0;
+  for (std::size_t i = 0; i < planes.size (); ++i)
+    for (const pcl::index_t idx : planes[i].indices.indices)
+      if (idx >= 0 && static_cast<std::size_t> (idx) < n && labels[idx] == 0)
+      {
+        labels[idx] = static_cast<std::uint32_t> (i + 1);
+        ++assigned;
+      }
+
+  // --- summary
+  std::printf ("input: %s\n", source.c_str ());
+  std::printf ("points: %zu\n", n);
+  std::printf ("valid points: %zu\n", valid);
+  std::printf ("planes: %zu\n", planes.size ());
+  std::printf ("points in planes: %zu (%.1f %% of valid)\n", assigned,
+               100.0 * static_cast<double> (assigned) / static_cast<double> (valid));
+  if (!planes.empty ())
+    std::printf ("%5s %10s  %-30s %12s\n", "label", "points", "normal (a, b, c)", "d");
+  const std::size_t shown = std::min<std::size_t> (planes.size (), 20);
+  for (std::size_t i = 0; i < shown; ++i)
+  {
+    // + 0.0 turns -0 into 0 for display.
+    const Eigen::Vector4d c = planeOf (planes[i]) + Eigen::Vector4d::Zero ();
+    std::printf ("%5zu %10zu  (%8.5f, %8.5f, %8.5f) %12.6g\n", i + 1, planes[i].indices.indices.size (), c[0], c[1],
+                 c[2], c[3]);
+  }
+  if (planes.size () > shown)
+    std::printf ("  ... and %zu smaller planes\n", planes.size () - shown);
+  std::fflush (stdout);
+
+  // --- write
+  t0 = std::chrono::steady_clock::now ();
+  if (!o.output.empty ())
+  {
+    log ("writing %s", o.output.c_str ());
+    if (!rspd_tools::writeLabeledCloud (o.output, cloud, labels, error))
+      return fail (error);
+  }
+  if (!o.planes_csv.empty ())
+  {
+    log ("writing %s", o.planes_csv.c_str ());
+    if (!rspd_tools::writeFileAtomically (o.planes_csv, planesCsv (planes), error))
+      return fail (error);
+  }
+  if (!o.png.empty ())
+  {
+    log ("rendering %s (%dx%d)", o.png.c_str (), o.png_width, o.png_height);
+    if (!rspd_tools::renderPng (*cloud.xyz, labels, o.png, o.png_width, o.png_height, error))
+      return fail (error);
+  }
+  log ("write: %.3f s", secondsSince (t0));
+  return 0;
+}
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  Options options;
+  try
+  {
+    options = parseArguments (argc, argv);
+  }
+  catch (const UsageError& e)
+  {
+    std::fprintf (stderr, "rspd_segment: %s\n%s\n", e.message.c_str (), kUsage);
+    return 2;
+  }
+  if (options.help)
+  {
+    std::printf ("%s\n\n%s", kUsage, kHelp);
+    return 0;
+  }
+  // PCL's own messages would add lines after ours for the same problem; show them only with -v.
+  pcl::console::setVerbosityLevel (options.verbose ? pcl::console::L_INFO : pcl::console::L_ALWAYS);
+  try
+  {
+    return run (options);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return fail ("out of memory");
+  }
+  catch (const std::exception& e)
+  {
+    return fail (e.what ());
+  }
+  catch (...)
+  {
+    return fail ("unexpected error");
+  }
+}
