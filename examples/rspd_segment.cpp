@@ -270,7 +270,7 @@ run (const Options& o)
   if (valid == 0)
     return fail ((o.demo ? std::string ("demo scene") : o.input) + ": the cloud has no point with finite x, y and z");
 
-  // --- detect: the class runs normals, graph, split and grow/merge internally; timed as one stage.
+  // --- detect: the class runs graph, normals, split and grow/merge; it reports each stage's time.
   t0 = std::chrono::steady_clock::now ();
   pcl::RobustPlaneSegmentation<pcl::PointXYZ, pcl::Normal> seg;
   seg.setInputCloud (cloud.xyz);
@@ -294,6 +294,8 @@ run (const Options& o)
        " %zu re-estimations, %zu merges%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
        stats.iterations, stats.reestimations, stats.merges, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+  log ("stages: neighbour graph %.3f s, normals %.3f s%s, split %.3f s, grow/merge %.3f s", stats.graph_seconds,
+       stats.normals_seconds, cloud.normals ? " (from the file)" : "", stats.split_seconds, stats.grow_merge_seconds);
 
   // Label i = i-th plane; the class returns planes largest first.
   std::vector<std::uint32_t> labels (n, 0);
