@@ -218,7 +218,7 @@ struct PcdHeader
 
 bool
 parsePcdHeader (const std::string& path, const std::string& text, std::uint64_t file_size,
-                PcdHeader& h, std::string& error)
+                PcdHeader& h, std::string& error, bool require_xyz = true)
 {
   const std::string where = path + ": ";
   bool has_fields = false, has_size = false, has_type = false, has_count = false;
@@ -377,7 +377,7 @@ parsePcdHeader (const std::string& path, const std::string& text, std::uint64_t 
   }
   for (const char* axis : {"x", "y", "z"})
   {
-    if (std::find (h.names.begin (), h.names.end (), axis) == h.names.end ())
+    if (require_xyz && std::find (h.names.begin (), h.names.end (), axis) == h.names.end ())
     {
       error = where + "the cloud has no '" + axis + "' field (FIELDS:";
       for (std::size_t i = 0; i < nf && i < 12; ++i)
@@ -858,13 +858,14 @@ buildViews (LoadedCloud& c)
 }
 
 bool
-loadPcd (const std::string& path, std::uint64_t file_size, LoadedCloud& c, std::string& error)
+loadPcd (const std::string& path, std::uint64_t file_size, LoadedCloud& c, std::string& error,
+         bool require_xyz = true)
 {
   std::string text;
   if (!readPrefix (path, kMaxHeaderBytes, text, error))
     return false;
   PcdHeader h;
-  if (!parsePcdHeader (path, text, file_size, h, error) || !checkPcdBody (path, h, file_size, error))
+  if (!parsePcdHeader (path, text, file_size, h, error, require_xyz) || !checkPcdBody (path, h, file_size, error))
     return false;
   pcl::PCDReader reader;
   int version = 0;
@@ -929,6 +930,25 @@ loadPly (const std::string& path, std::uint64_t file_size, LoadedCloud& c, std::
   return true;
 }
 
+/** Path names a non-empty regular file; its size. */
+bool
+checkInputFile (const std::string& path, std::uint64_t& file_size, std::string& error)
+{
+  struct stat st;
+  if (path.empty ())
+    return error = "no input file given", false;
+  if (::stat (path.c_str (), &st) != 0)
+    return error = path + ": " + (errno == ENOENT ? std::string ("no such file") : std::strerror (errno)), false;
+  if (S_ISDIR (st.st_mode))
+    return error = path + ": is a directory, not a point cloud file", false;
+  if (!S_ISREG (st.st_mode))
+    return error = path + ": not a regular file", false;
+  if (st.st_size == 0)
+    return error = path + ": the file is empty", false;
+  file_size = static_cast<std::uint64_t> (st.st_size);
+  return true;
+}
+
 /** \brief A label / colour slot of the output point. */
 enum class Slot
 {
@@ -941,37 +961,35 @@ enum class Slot
 
 // -----------------------------------------------------------------------------------------------
 bool
+loadPcdBlob (const std::string& path, pcl::PCLPointCloud2& blob, std::string& error)
+{
+  error.clear ();
+  std::uint64_t file_size = 0;
+  if (!checkInputFile (path, file_size, error))
+    return false;
+  LoadedCloud c;
+  try
+  {
+    if (!loadPcd (path, file_size, c, error, false))
+      return false;
+  }
+  catch (const std::exception& e)
+  {
+    return error = path + ": cannot read the file: " + printable (e.what ()), false;
+  }
+  blob = std::move (c.blob);
+  return true;
+}
+
+// -----------------------------------------------------------------------------------------------
+bool
 loadCloud (const std::string& path, LoadedCloud& out, std::string& error)
 {
   out = LoadedCloud ();
   error.clear ();
-  struct stat st;
-  if (path.empty ())
-  {
-    error = "no input file given";
+  std::uint64_t file_size = 0;
+  if (!checkInputFile (path, file_size, error))
     return false;
-  }
-  if (::stat (path.c_str (), &st) != 0)
-  {
-    error = path + ": " + (errno == ENOENT ? std::string ("no such file") : std::strerror (errno));
-    return false;
-  }
-  if (S_ISDIR (st.st_mode))
-  {
-    error = path + ": is a directory, not a point cloud file";
-    return false;
-  }
-  if (!S_ISREG (st.st_mode))
-  {
-    error = path + ": not a regular file";
-    return false;
-  }
-  if (st.st_size == 0)
-  {
-    error = path + ": the file is empty";
-    return false;
-  }
-  const std::uint64_t file_size = static_cast<std::uint64_t> (st.st_size);
 
   std::string ext = extensionOf (path);
   if (ext != "pcd" && ext != "ply")

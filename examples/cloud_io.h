@@ -67,6 +67,11 @@ struct LoadedCloud
 bool
 loadCloud (const std::string& path, LoadedCloud& out, std::string& error);
 
+/** \brief Read any PCD file (x, y and z not required, e.g. a pcl::Label cloud) into a blob, with
+  * the same header, size and block checks as loadCloud. \return false with \a error set otherwise */
+bool
+loadPcdBlob (const std::string& path, pcl::PCLPointCloud2& blob, std::string& error);
+
 /** \brief Wrap an in-memory cloud (e.g. a generated scene) as if it had been read from a file. */
 void
 makeLoadedCloud (const pcl::PointCloud<pcl::PointXYZ>& cloud, LoadedCloud& out);

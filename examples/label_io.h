@@ -6,6 +6,8 @@
  */
 #pragma once
 
+#include "cloud_io.h"
+
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/PCLPointField.h>
 #include <pcl/io/pcd_io.h>
@@ -61,172 +63,6 @@ regularFileSize (const std::string& path, std::uint64_t& size, std::string& erro
   return true;
 }
 
-/** \brief Check that \a path starts with a plausible PCD header and holds at least the data it
-  * announces. PCL 1.13's reader crashes on some malformed input (e.g. a text file without a
-  * header), so a tool must not hand it a file before this passes.
-  * \param[in] path PCD file
-  * \param[in] file_size its size in bytes
-  * \param[out] error one-line reason on failure
-  */
-inline bool
-checkPCDHeader (const std::string& path, std::uint64_t file_size, std::string& error)
-{
-  std::ifstream in (path, std::ios::binary);
-  if (!in)
-  {
-    error = path + ": cannot open";
-    return false;
-  }
-  const auto fail = [&] (const std::string& why) {
-    error = path + ": not a valid PCD file (" + why + ")";
-    return false;
-  };
-  std::size_t fields = 0, points = 0, width = 0, height = 1;
-  bool have_fields = false, have_width = false, have_points = false;
-  std::vector<std::size_t> sizes, counts;
-  std::string line;
-  // A header is a few hundred bytes; do not scan a large binary file looking for one.
-  constexpr std::uint64_t kMaxHeader = 1u << 20;
-  while (static_cast<std::uint64_t> (in.tellg ()) < kMaxHeader && std::getline (in, line))
-  {
-    if (!line.empty () && line.back () == '\r')
-      line.pop_back ();
-    std::vector<std::string> tokens;
-    std::size_t pos = 0;
-    while (pos < line.size ())
-    {
-      const std::size_t start = line.find_first_not_of (" \t", pos);
-      if (start == std::string::npos)
-        break;
-      const std::size_t end = std::min (line.find_first_of (" \t", start), line.size ());
-      tokens.push_back (line.substr (start, end - start));
-      pos = end;
-    }
-    if (tokens.empty () || tokens[0][0] == '#')
-      continue;
-    const std::string& key = tokens[0];
-    const std::size_t n = tokens.size () - 1;
-    auto number = [&] (std::size_t k, std::size_t& out) {
-      const std::string& t = tokens[k];
-      if (t.empty () || t.size () > 18 ||
-          !std::all_of (t.begin (), t.end (), [] (unsigned char c) { return std::isdigit (c); }))
-        return false;
-      out = static_cast<std::size_t> (std::stoull (t));
-      return true;
-    };
-    if (key == "VERSION" || key == "VIEWPOINT")
-      continue;
-    if (key == "FIELDS" || key == "COLUMNS")
-    {
-      fields = n;
-      have_fields = n > 0;
-      sizes.assign (n, 0);
-      counts.assign (n, 1);
-    }
-    else if (key == "SIZE" || key == "COUNT")
-    {
-      if (!have_fields || n != fields)
-        return fail (key + " does not match FIELDS");
-      auto& target = key == "SIZE" ? sizes : counts;
-      for (std::size_t k = 0; k < n; ++k)
-        if (!number (k + 1, target[k]) || (key == "SIZE" && target[k] != 1 && target[k] != 2 &&
-                                           target[k] != 4 && target[k] != 8))
-          return fail ("bad " + key + " entry '" + tokens[k + 1] + "'");
-    }
-    else if (key == "TYPE")
-    {
-      if (!have_fields || n != fields)
-        return fail ("TYPE does not match FIELDS");
-      for (std::size_t k = 1; k <= n; ++k)
-        if (tokens[k] != "F" && tokens[k] != "I" && tokens[k] != "U")
-          return fail ("bad TYPE entry '" + tokens[k] + "'");
-    }
-    else if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS")
-    {
-      std::size_t value = 0;
-      if (n != 1 || !number (1, value))
-        return fail ("bad " + key + " line");
-      (key == "WIDTH" ? width : key == "HEIGHT" ? height : points) = value;
-      have_width = have_width || key == "WIDTH";
-      have_points = have_points || key == "POINTS";
-    }
-    else if (key == "DATA")
-    {
-      if (!have_fields || !have_width || !have_points)
-        return fail ("FIELDS, WIDTH or POINTS missing");
-      if (std::find (sizes.begin (), sizes.end (), std::size_t (0)) != sizes.end ())
-        return fail ("SIZE missing");
-      if (width * height != points)
-        return fail ("WIDTH * HEIGHT differs from POINTS");
-      if (n != 1)
-        return fail ("bad DATA line");
-      const std::uint64_t header = static_cast<std::uint64_t> (in.tellg ());
-      const std::uint64_t rest = file_size >= header ? file_size - header : 0;
-      std::uint64_t point_size = 0;
-      for (std::size_t k = 0; k < fields; ++k)
-        point_size += static_cast<std::uint64_t> (sizes[k]) * counts[k];
-      if (tokens[1] == "ascii")
-        return true;
-      if (tokens[1] == "binary")
-      {
-        if (rest < point_size * points)
-          return fail ("truncated binary data");
-        return true;
-      }
-      if (tokens[1] == "binary_compressed")
-      {
-        if (points == 0)
-          return true;
-        unsigned char b[4];
-        if (rest < 8 || !in.read (reinterpret_cast<char*> (b), 4))
-          return fail ("truncated compressed data");
-        const std::uint64_t compressed = static_cast<std::uint64_t> (b[0]) | (b[1] << 8) |
-                                         (b[2] << 16) | (static_cast<std::uint64_t> (b[3]) << 24);
-        if (compressed + 8 > rest)
-          return fail ("truncated compressed data");
-        return true;
-      }
-      return fail ("unknown DATA type '" + tokens[1] + "'");
-    }
-    else
-      return fail ("unexpected '" + key.substr (0, 32) + "' in header");
-  }
-  return fail ("no DATA line");
-}
-
-/** \brief Read a PCD file into a PCLPointCloud2, after the checks PCL's reader does not do well
-  * (a missing, empty or malformed file gives confusing messages or a crash). PCL's own console
-  * output is left to the caller's verbosity setting.
-  */
-inline bool
-readPCDBlob (const std::string& path, pcl::PCLPointCloud2& blob, std::string& error)
-{
-  std::uint64_t size = 0;
-  if (!regularFileSize (path, size, error))
-    return false;
-  if (size == 0)
-  {
-    error = path + ": empty file";
-    return false;
-  }
-  if (!checkPCDHeader (path, size, error))
-    return false;
-  try
-  {
-    if (pcl::io::loadPCDFile (path, blob) < 0)
-    {
-      error = path + ": not a readable PCD file";
-      return false;
-    }
-  }
-  catch (const std::exception& e)
-  {
-    error = path + ": not a readable PCD file (" + e.what () + ")";
-    return false;
-  }
-  return true;
-}
-
 /** \brief Read one scalar of PCL type \a datatype at \a p as a label; false when it is negative,
   * not an integer, too large for uint32 or of an unsupported type.
   */
@@ -278,7 +114,7 @@ readLabels (const std::string& path, std::size_t expected_count, std::vector<std
   if (hasExtension (path, ".pcd"))
   {
     pcl::PCLPointCloud2 blob;
-    if (!readPCDBlob (path, blob, error))
+    if (!loadPcdBlob (path, blob, error)) // header and size checks before PCL reads it
       return false;
     const auto field = std::find_if (blob.fields.begin (), blob.fields.end (),
                                      [] (const pcl::PCLPointField& f) { return f.name == "label"; });

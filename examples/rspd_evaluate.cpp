@@ -9,6 +9,7 @@
  * success, 1 on a file or data error, 2 on a usage error; errors are one line on stderr.
  */
 
+#include "cloud_io.h"
 #include "label_io.h"
 
 #include <pcl_rspd/plane_evaluation.h>
@@ -53,104 +54,15 @@ fileError (const std::string& message)
   return 1;
 }
 
-/** \brief Read coordinate \a field of point \a i of \a blob as float (FLOAT32 or FLOAT64 fields). */
-float
-coordinate (const pcl::PCLPointCloud2& blob, const pcl::PCLPointField& field, std::size_t i)
-{
-  const std::size_t row = i / blob.width, col = i % blob.width;
-  const std::uint8_t* p = blob.data.data () + row * blob.row_step + col * blob.point_step + field.offset;
-  if (field.datatype == pcl::PCLPointField::FLOAT64)
-  {
-    double v;
-    std::memcpy (&v, p, sizeof (v));
-    return static_cast<float> (v);
-  }
-  float v;
-  std::memcpy (&v, p, sizeof (v));
-  return v;
-}
-
-/** \brief Load a .pcd or .ply cloud's x, y, z (float or double fields) keeping every point, NaNs
-  * included, so that the label files line up with it.
-  */
+/** \brief Load a .pcd or .ply cloud's positions, every point kept (NaN included) so that the label
+  * files line up with it; the shared loader checks the file before PCL reads it. */
 bool
 loadCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, std::string& error)
 {
-  pcl::PCLPointCloud2 blob;
-  if (rspd_tools::hasExtension (path, ".pcd"))
-  {
-    if (!rspd_tools::readPCDBlob (path, blob, error))
-      return false;
-  }
-  else if (rspd_tools::hasExtension (path, ".ply"))
-  {
-    std::uint64_t size = 0;
-    if (!rspd_tools::regularFileSize (path, size, error))
-      return false;
-    if (size == 0)
-    {
-      error = path + ": empty file";
-      return false;
-    }
-    try
-    {
-      if (pcl::io::loadPLYFile (path, blob) < 0)
-      {
-        error = path + ": not a readable PLY file";
-        return false;
-      }
-    }
-    catch (const std::exception& e)
-    {
-      error = path + ": not a readable PLY file (" + e.what () + ")";
-      return false;
-    }
-  }
-  else
-  {
-    error = path + ": unsupported cloud format (expected .pcd or .ply)";
+  rspd_tools::LoadedCloud loaded;
+  if (!rspd_tools::loadCloud (path, loaded, error))
     return false;
-  }
-
-  const pcl::PCLPointField* xyz[3] = {nullptr, nullptr, nullptr};
-  const char* names[3] = {"x", "y", "z"};
-  for (const auto& f : blob.fields)
-    for (int a = 0; a < 3; ++a)
-      if (f.name == names[a])
-        xyz[a] = &f;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!xyz[a])
-    {
-      error = path + ": no '" + names[a] + "' field";
-      return false;
-    }
-    if (xyz[a]->datatype != pcl::PCLPointField::FLOAT32 &&
-        xyz[a]->datatype != pcl::PCLPointField::FLOAT64)
-    {
-      error = path + ": field '" + names[a] + "' is not float32 or float64";
-      return false;
-    }
-    if (xyz[a]->offset + pcl::getFieldSize (xyz[a]->datatype) > blob.point_step)
-    {
-      error = path + ": inconsistent point layout";
-      return false;
-    }
-  }
-  const std::size_t count = static_cast<std::size_t> (blob.width) * blob.height;
-  if (blob.data.size () < static_cast<std::size_t> (blob.row_step) * blob.height ||
-      static_cast<std::size_t> (blob.point_step) * blob.width > blob.row_step)
-  {
-    error = path + ": inconsistent point layout";
-    return false;
-  }
-  cloud.resize (count);
-  for (std::size_t i = 0; i < count; ++i)
-    cloud[i] = pcl::PointXYZ (coordinate (blob, *xyz[0], i), coordinate (blob, *xyz[1], i),
-                              coordinate (blob, *xyz[2], i));
-  cloud.width = blob.width;
-  cloud.height = blob.height;
-  cloud.is_dense = false;
+  cloud = *loaded.xyz;
   return true;
 }
 } // namespace

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/point_set.h>
 
 #include <Eigen/Geometry>
@@ -54,5 +55,22 @@ addRectangle (pcl::rspd::PointSet& set, const Eigen::Vector3f& o, const Eigen::V
       set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
     }
   return added;
+}
+/** A patch with the given members, plane (c, n) and interval half-widths (MDP and MND around a
+  * zero median). */
+inline pcl::rspd::PlanarPatch
+makePatch (const std::vector<std::uint32_t>& members, const Eigen::Vector3d& c, const Eigen::Vector3d& n,
+           double mdp, double mnd)
+{
+  pcl::rspd::PlanarPatch p;
+  p.members = members;
+  p.first_index = *std::min_element (members.begin (), members.end ());
+  pcl::rspd::PlaneEstimate e;
+  e.center = c;
+  e.normal = n;
+  e.distance_halfwidth = mdp;
+  e.angle_halfwidth = mnd;
+  p.setEstimate (e);
+  return p;
 }
 } // namespace rspd_test

@@ -11,25 +11,6 @@
 
 using namespace pcl::rspd;
 
-namespace
-{
-PlanarPatch
-seedPatch (const std::vector<std::uint32_t>& members, const Eigen::Vector3d& c, const Eigen::Vector3d& n, double mdp,
-           double mnd)
-{
-  PlanarPatch p;
-  p.members = members;
-  p.first_index = *std::min_element (members.begin (), members.end ());
-  PlaneEstimate e;
-  e.center = c;
-  e.normal = n;
-  e.distance_halfwidth = mdp;
-  e.angle_halfwidth = mnd;
-  p.setEstimate (e);
-  return p;
-}
-} // namespace
-
 TEST (PatchGrowth, GrowsOverTheConnectedPlaneAndStopsAtAStep)
 {
   // A floor, and a second floor 5 cm higher next to it: a seed in the first grows over it only.
@@ -37,7 +18,7 @@ TEST (PatchGrowth, GrowsOverTheConnectedPlaneAndStopsAtAStep)
   const auto low = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 30, 30);
   const auto high = rspd_test::addRectangle (s, {1.02f, 0, 0.05f}, {1, 0, 0}, {0, 1, 0}, 30, 30);
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 10);
-  std::vector<PlanarPatch> patches{seedPatch ({low[0], low[1], low[30]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.05)};
+  std::vector<PlanarPatch> patches{rspd_test::makePatch ({low[0], low[1], low[30]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.05)};
   auto labels = labelSamples (s.size (), patches);
   const std::size_t added = growPatches (s, g, patches, labels);
   EXPECT_EQ (added, low.size () - 3);
@@ -55,7 +36,7 @@ TEST (PatchGrowth, NormalDeviationLimitsGrowth)
     if (s.points[i].x () > 0.5f)
       s.normals[i] = Eigen::Vector3f (0.3f, 0.0f, 1.0f).normalized (); // 16.7° off
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
-  std::vector<PlanarPatch> patches{seedPatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 10.0 * M_PI / 180.0)};
+  std::vector<PlanarPatch> patches{rspd_test::makePatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 10.0 * M_PI / 180.0)};
   auto labels = labelSamples (s.size (), patches);
   growPatches (s, g, patches, labels);
   for (std::size_t i = 0; i < s.size (); ++i)
@@ -68,8 +49,8 @@ TEST (PatchGrowth, LeastNoisyPatchGrowsFirst)
   PointSet s;
   const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20);
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
-  std::vector<PlanarPatch> patches{seedPatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.2),
-                                   seedPatch ({a[399]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+  std::vector<PlanarPatch> patches{rspd_test::makePatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.2),
+                                   rspd_test::makePatch ({a[399]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
   auto labels = labelSamples (s.size (), patches);
   growPatches (s, g, patches, labels);
   EXPECT_EQ (patches[1].members.size (), 399u);
@@ -85,8 +66,8 @@ TEST (PatchGrowth, NeverTakesSamplesOfAnotherPatch)
   for (std::size_t i = 0; i < s.size (); ++i)
     if (s.points[i].x () > 0.5f)
       right.push_back (static_cast<std::uint32_t> (i));
-  std::vector<PlanarPatch> patches{seedPatch (right, {0, 0, 0}, {0, 0, 1}, 0.01, 0.5),
-                                   seedPatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+  std::vector<PlanarPatch> patches{rspd_test::makePatch (right, {0, 0, 0}, {0, 0, 1}, 0.01, 0.5),
+                                   rspd_test::makePatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
   auto labels = labelSamples (s.size (), patches);
   growPatches (s, g, patches, labels);
   EXPECT_EQ (patches[0].members.size (), right.size ());

@@ -11,25 +11,6 @@
 
 using namespace pcl::rspd;
 
-namespace
-{
-PlanarPatch
-patchOf (const std::vector<std::uint32_t>& members, const Eigen::Vector3d& c, const Eigen::Vector3d& n, double mdp,
-         double mnd)
-{
-  PlanarPatch p;
-  p.members = members;
-  p.first_index = *std::min_element (members.begin (), members.end ());
-  PlaneEstimate e;
-  e.center = c;
-  e.normal = n;
-  e.distance_halfwidth = mdp;
-  e.angle_halfwidth = mnd;
-  p.setEstimate (e);
-  return p;
-}
-} // namespace
-
 TEST (UnionFind, JoinsTransitivelyAndIndependentlyOfOrder)
 {
   UnionFind a (5), b (5);
@@ -57,9 +38,9 @@ TEST (PatchMerge, FigureFiveConditions)
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
   const double mdp = 0.01, mnd = 0.1;
   std::vector<PlanarPatch> patches{
-      patchOf (A, {0, 0.5, 0.25}, {1, 0, 0}, mdp, mnd), patchOf (B, {0.25, 0.5, 0}, {0, 0, 1}, mdp, mnd),
-      patchOf (C, {0.8, 0.5, 0.05}, {0, 0, 1}, mdp, mnd), patchOf (D, {1.3, 0.5, 0.05}, {0, 0, 1}, mdp, mnd),
-      patchOf (E, {5.25, 0.5, 0.05}, {0, 0, 1}, mdp, mnd)};
+      rspd_test::makePatch (A, {0, 0.5, 0.25}, {1, 0, 0}, mdp, mnd), rspd_test::makePatch (B, {0.25, 0.5, 0}, {0, 0, 1}, mdp, mnd),
+      rspd_test::makePatch (C, {0.8, 0.5, 0.05}, {0, 0, 1}, mdp, mnd), rspd_test::makePatch (D, {1.3, 0.5, 0.05}, {0, 0, 1}, mdp, mnd),
+      rspd_test::makePatch (E, {5.25, 0.5, 0.05}, {0, 0, 1}, mdp, mnd)};
   EXPECT_FALSE (normalsCompatible (patches[0], patches[1])); // A-B fail M2
   EXPECT_TRUE (normalsCompatible (patches[1], patches[2]));  // B-C pass M2, fail M3
   auto labels = labelSamples (s.size (), patches);
@@ -84,8 +65,8 @@ TEST (PatchMerge, LargestPatchRepresentsTheGroup)
   const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {0.3f, 0, 0}, {0, 1, 0}, 6, 20);
   const auto b = rspd_test::addRectangle (s, {0.3f, 0, 0}, {0.7f, 0, 0}, {0, 1, 0}, 14, 20);
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 10);
-  std::vector<PlanarPatch> patches{patchOf (a, {0.1, 0.5, 0}, {0, 0, 1}, 0.01, 0.1),
-                                   patchOf (b, {0.6, 0.5, 0}, Eigen::Vector3d (0, 0.01, 1).normalized (), 0.01, 0.1)};
+  std::vector<PlanarPatch> patches{rspd_test::makePatch (a, {0.1, 0.5, 0}, {0, 0, 1}, 0.01, 0.1),
+                                   rspd_test::makePatch (b, {0.6, 0.5, 0}, Eigen::Vector3d (0, 0.01, 1).normalized (), 0.01, 0.1)};
   auto labels = labelSamples (s.size (), patches);
   EXPECT_EQ (mergePatches (s, g, patches, labels), 1u);
   ASSERT_EQ (patches.size (), 1u);
@@ -103,8 +84,8 @@ TEST (PatchMerge, OneBoundaryInlierIsEnoughForM3)
   const auto b = rspd_test::addRectangle (s, {0.5f, 0, 0}, {0.5f, 0, 0.02f}, {0, 1, 0}, 10, 20);
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 6);
   const Eigen::Vector3d nb = Eigen::Vector3d (-0.04, 0, 1).normalized ();
-  std::vector<PlanarPatch> patches{patchOf (a, {0.25, 0.5, 0}, {0, 0, 1}, 0.002, 0.1),
-                                   patchOf (b, {0.75, 0.5, 0.01}, nb, 0.0001, 0.1)};
+  std::vector<PlanarPatch> patches{rspd_test::makePatch (a, {0.25, 0.5, 0}, {0, 0, 1}, 0.002, 0.1),
+                                   rspd_test::makePatch (b, {0.75, 0.5, 0.01}, nb, 0.0001, 0.1)};
   auto labels = labelSamples (s.size (), patches);
   EXPECT_EQ (mergePatches (s, g, patches, labels), 1u);
 }
