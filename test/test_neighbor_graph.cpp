@@ -1,0 +1,571 @@
+/*
+ * pcl_rspd: tests of the exact k-NN graph builder against brute force and pcl::KdTreeFLANN.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/neighbor_graph.h>
+
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using Points = std::vector<Eigen::Vector3f>;
+using pcl::rspd::NeighborGraph;
+
+float
+dist2 (const Points& p, std::size_t i, std::size_t j)
+{
+  return (p[i] - p[j]).squaredNorm ();
+}
+
+// --- clouds -------------------------------------------------------------------------------
+
+Points
+uniformCube (std::size_t n, unsigned seed, const Eigen::Vector3f& scale = Eigen::Vector3f::Ones ())
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (-1.f, 1.f);
+  Points p (n);
+  for (auto& x : p)
+    x = Eigen::Vector3f (u (rng), u (rng), u (rng)).cwiseProduct (scale);
+  return p;
+}
+
+/** Points on the six faces of a cube of half-size 1, optionally with a little noise. */
+Points
+cubeFaces (std::size_t n, unsigned seed, float noise = 0.f)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (-1.f, 1.f);
+  std::normal_distribution<float> g (0.f, 1.f);
+  Points p (n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const int face = static_cast<int> (i % 6);
+    Eigen::Vector3f x (u (rng), u (rng), u (rng));
+    x[face / 2] = (face % 2) ? 1.f : -1.f;
+    if (noise > 0.f)
+      x += noise * Eigen::Vector3f (g (rng), g (rng), g (rng));
+    p[i] = x;
+  }
+  return p;
+}
+
+/** Two crossing planes, one tilted. */
+Points
+twoPlanes (std::size_t n, unsigned seed)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (-1.f, 1.f);
+  Points p (n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float a = u (rng), b = u (rng);
+    p[i] = (i % 2) ? Eigen::Vector3f (a, b, 0.f) : Eigen::Vector3f (a, 0.3f * b, 0.95f * b);
+  }
+  return p;
+}
+
+/** Gaussian clusters whose spreads differ by three orders of magnitude, uniform background noise
+  * and one far outlier: density varies wildly across the cloud. */
+Points
+clustered (std::size_t n, unsigned seed)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (-1.f, 1.f);
+  std::normal_distribution<float> g (0.f, 1.f);
+  const int num_clusters = 12;
+  std::vector<Eigen::Vector3f> centres;
+  std::vector<float> sigma;
+  for (int c = 0; c < num_clusters; ++c)
+  {
+    centres.emplace_back (u (rng), u (rng), u (rng));
+    sigma.push_back (std::pow (10.f, -3.f + 3.f * static_cast<float> (c) / (num_clusters - 1)));
+  }
+  Points p (n);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+  {
+    if (i % 10 == 0)
+      p[i] = Eigen::Vector3f (u (rng), u (rng), u (rng));
+    else
+    {
+      const int c = static_cast<int> (i % num_clusters);
+      p[i] = centres[c] + sigma[c] * Eigen::Vector3f (g (rng), g (rng), g (rng));
+    }
+  }
+  p[n - 1] = Eigen::Vector3f (40.f, -30.f, 25.f);
+  return p;
+}
+
+// --- checks -------------------------------------------------------------------------------
+
+/** Rows hold distinct indices other than self, in increasing (distance, index) order. */
+void
+expectWellFormed (const Points& p, const NeighborGraph& g)
+{
+  ASSERT_EQ (g.size (), p.size ());
+  const int k = g.k ();
+  std::vector<std::uint32_t> sorted (k);
+  for (std::size_t i = 0; i < g.size (); ++i)
+  {
+    const std::uint32_t* r = g.neighbors (i);
+    for (int t = 0; t < k; ++t)
+    {
+      ASSERT_LT (r[t], p.size ());
+      ASSERT_NE (r[t], i) << "self in row " << i;
+      if (t > 0)
+      {
+        const float d0 = dist2 (p, i, r[t - 1]), d1 = dist2 (p, i, r[t]);
+        ASSERT_TRUE (d0 < d1 || (d0 == d1 && r[t - 1] < r[t])) << "row " << i << " position " << t;
+      }
+    }
+    sorted.assign (r, r + k);
+    std::sort (sorted.begin (), sorted.end ());
+    ASSERT_TRUE (std::adjacent_find (sorted.begin (), sorted.end ()) == sorted.end ())
+      << "row " << i;
+  }
+}
+
+/** Exact comparison with the contract: the first k of all j != i in (distance, index) order.
+  * Exact equality holds because the builder's distances are the floats squaredNorm () gives. */
+void
+expectEqualsBruteForce (const Points& p, const NeighborGraph& g)
+{
+  const int k = g.k ();
+  std::vector<std::pair<float, std::uint32_t>> all;
+  for (std::size_t i = 0; i < p.size (); ++i)
+  {
+    all.clear ();
+    for (std::size_t j = 0; j < p.size (); ++j)
+      if (j != i)
+        all.emplace_back (dist2 (p, i, j), static_cast<std::uint32_t> (j));
+    std::partial_sort (all.begin (), all.begin () + k, all.end ());
+    for (int t = 0; t < k; ++t)
+      ASSERT_EQ (g.neighbors (i)[t], all[t].second) << "row " << i << " position " << t;
+  }
+}
+
+/** FLANN sums the squares in another order: allow a few ulps, relative (the clusters' distances
+  * are tiny). */
+float
+tolerance (float d2)
+{
+  return 1e-6f * d2 + 1e-30f;
+}
+
+/** Comparison with KdTreeFLANN: same sorted distances; same index sets unless the k-th distance
+  * is tied with the next one. */
+void
+expectMatchesFlann (const Points& p, const NeighborGraph& g)
+{
+  const int k = g.k ();
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  cloud->resize (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    (*cloud)[i].getVector3fMap () = p[i];
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud (cloud);
+
+  // k + 2 so that, self removed, the (k+1)-th neighbour tells whether the k-th is tied.
+  const int kq = std::min<int> (k + 2, static_cast<int> (p.size ()));
+  pcl::Indices idx;
+  std::vector<float> d2;
+  std::vector<std::uint32_t> ours, theirs;
+  std::size_t checked_sets = 0;
+  for (std::size_t i = 0; i < p.size (); ++i)
+  {
+    ASSERT_EQ (tree.nearestKSearch ((*cloud)[i], kq, idx, d2), kq);
+    // Drop self; if a duplicate of i pushed it out, drop one zero-distance entry instead.
+    auto self = std::find (idx.begin (), idx.end (), static_cast<pcl::index_t> (i));
+    const std::size_t drop =
+      self != idx.end () ? static_cast<std::size_t> (self - idx.begin ()) : 0;
+    idx.erase (idx.begin () + drop);
+    d2.erase (d2.begin () + drop);
+
+    const std::uint32_t* r = g.neighbors (i);
+    for (int t = 0; t < k; ++t)
+    {
+      const float mine = dist2 (p, i, r[t]);
+      ASSERT_NEAR (mine, d2[t], tolerance (d2[t])) << "row " << i << " position " << t;
+    }
+    const bool tied = static_cast<int> (d2.size ()) > k && d2[k] - d2[k - 1] <= tolerance (d2[k]);
+    if (!tied)
+    {
+      ours.assign (r, r + k);
+      theirs.assign (idx.begin (), idx.begin () + k);
+      std::sort (ours.begin (), ours.end ());
+      std::sort (theirs.begin (), theirs.end ());
+      ASSERT_EQ (ours, theirs) << "row " << i;
+      ++checked_sets;
+    }
+  }
+  // Random clouds have essentially no ties: the set comparison must have run almost everywhere.
+  EXPECT_GT (checked_sets, p.size () * 9 / 10);
+}
+
+NeighborGraph
+build (const Points& p, int k, int threads = 2)
+{
+  NeighborGraph g;
+  EXPECT_TRUE (pcl::rspd::buildKnnGraph (p, k, threads, g));
+  EXPECT_EQ (g.k (), k);
+  EXPECT_EQ (g.size (), p.size ());
+  return g;
+}
+
+bool
+sameGraph (const NeighborGraph& a, const NeighborGraph& b)
+{
+  if (a.size () != b.size () || a.k () != b.k ())
+    return false;
+  return std::equal (a.neighbors (0), a.neighbors (0) + a.size () * a.k (), b.neighbors (0));
+}
+
+} // namespace
+
+// --- tests --------------------------------------------------------------------------------
+
+TEST (NeighborGraph, RejectsInvalidArguments)
+{
+  const Points p = uniformCube (10, 1);
+  NeighborGraph g (3, 2);
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 0, 1, g));
+  EXPECT_TRUE (g.empty ());
+  g = NeighborGraph (3, 2);
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, -3, 1, g));
+  EXPECT_TRUE (g.empty ());
+  g = NeighborGraph (3, 2);
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 10, 1, g)); // n == k
+  EXPECT_TRUE (g.empty ());
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 11, 1, g)); // n < k
+  EXPECT_TRUE (g.empty ());
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (Points (), 1, 1, g));
+  EXPECT_TRUE (g.empty ());
+}
+
+TEST (NeighborGraph, SmallestCloudHoldsEveryOtherPoint)
+{
+  for (int k : {1, 2, 7, 50})
+  {
+    const Points p = uniformCube (k + 1, 2 + k);
+    const NeighborGraph g = build (p, k);
+    expectWellFormed (p, g);
+    expectEqualsBruteForce (p, g);
+  }
+}
+
+TEST (NeighborGraph, RandomCloudMatchesFlann)
+{
+  const Points p = uniformCube (20000, 3);
+  for (int k : {1, 10, 50})
+  {
+    const NeighborGraph g = build (p, k);
+    expectWellFormed (p, g);
+    expectMatchesFlann (p, g);
+  }
+}
+
+TEST (NeighborGraph, CubeFacesMatchFlann)
+{
+  const Points p = cubeFaces (30000, 4);
+  const NeighborGraph g = build (p, 50);
+  expectWellFormed (p, g);
+  expectMatchesFlann (p, g);
+
+  const Points noisy = cubeFaces (20000, 5, 0.01f);
+  const NeighborGraph gn = build (noisy, 30);
+  expectMatchesFlann (noisy, gn);
+}
+
+TEST (NeighborGraph, TwoPlanesMatchFlann)
+{
+  const Points p = twoPlanes (30000, 6);
+  const NeighborGraph g = build (p, 50);
+  expectWellFormed (p, g);
+  expectMatchesFlann (p, g);
+}
+
+TEST (NeighborGraph, AnisotropicCloudMatchesFlann)
+{
+  // A long, thin, flat slab: extents 100 : 1 : 0.01.
+  const Points p = uniformCube (20000, 7, Eigen::Vector3f (100.f, 1.f, 0.01f));
+  const NeighborGraph g = build (p, 40);
+  expectWellFormed (p, g);
+  expectMatchesFlann (p, g);
+}
+
+TEST (NeighborGraph, ClusteredCloudMatchesFlann)
+{
+  const Points p = clustered (30000, 8);
+  const NeighborGraph g = build (p, 50);
+  expectWellFormed (p, g);
+  expectMatchesFlann (p, g);
+}
+
+TEST (NeighborGraph, SmallCloudsEqualBruteForceExactly)
+{
+  expectEqualsBruteForce (uniformCube (1500, 9), build (uniformCube (1500, 9), 12));
+  expectEqualsBruteForce (cubeFaces (1500, 10), build (cubeFaces (1500, 10), 50));
+  expectEqualsBruteForce (clustered (1500, 11), build (clustered (1500, 11), 20));
+}
+
+TEST (NeighborGraph, LatticeTiesAreBrokenByIndex)
+{
+  // An integer lattice, shuffled: every distance is exact and massively tied, so the rows are fully
+  // determined by the tie rule.
+  Points p;
+  for (int x = 0; x < 12; ++x)
+    for (int y = 0; y < 12; ++y)
+      for (int z = 0; z < 8; ++z)
+        p.emplace_back (static_cast<float> (x) - 6.f, static_cast<float> (y) - 6.f,
+                        static_cast<float> (z) - 4.f);
+  std::shuffle (p.begin (), p.end (), std::mt19937 (12));
+  for (int k : {6, 18, 26, 50})
+  {
+    const NeighborGraph g = build (p, k);
+    expectWellFormed (p, g);
+    expectEqualsBruteForce (p, g);
+  }
+}
+
+TEST (NeighborGraph, IdenticalPointsAreNeighboursAtDistanceZero)
+{
+  const Points p (10000, Eigen::Vector3f (0.25f, -0.5f, 1.f));
+  const int k = 50;
+  const NeighborGraph g = build (p, k);
+  for (std::size_t i = 0; i < p.size (); ++i)
+  {
+    // All distances are 0, so the row is the k smallest indices other than i.
+    const std::uint32_t* r = g.neighbors (i);
+    std::uint32_t expected = 0;
+    for (int t = 0; t < k; ++t, ++expected)
+    {
+      if (expected == i)
+        ++expected;
+      ASSERT_EQ (r[t], expected) << "row " << i;
+    }
+  }
+}
+
+TEST (NeighborGraph, DuplicatedSamplesEqualBruteForce)
+{
+  // Every sample three times (the copies far apart in index), plus a run of one repeated point.
+  Points p = cubeFaces (700, 13);
+  const Points copy = p;
+  p.insert (p.end (), copy.begin (), copy.end ());
+  p.insert (p.end (), copy.begin (), copy.end ());
+  p.insert (p.end (), 80, p[5]);
+  for (int k : {2, 3, 30})
+  {
+    const NeighborGraph g = build (p, k);
+    expectWellFormed (p, g);
+    expectEqualsBruteForce (p, g);
+  }
+}
+
+TEST (NeighborGraph, PointsOnALine)
+{
+  std::mt19937 rng (14);
+  std::uniform_real_distribution<float> u (-1.f, 1.f);
+  const Eigen::Vector3f dir = Eigen::Vector3f (1.f, 2.f, -0.5f).normalized ();
+  Points p (3000);
+  for (auto& x : p)
+    x = u (rng) * dir;
+  // And an axis-aligned line with evenly spaced (tied) samples.
+  for (int i = 0; i < 1000; ++i)
+    p.emplace_back (0.f, 0.f, 0.001f * static_cast<float> (i) - 0.5f);
+  const NeighborGraph g = build (p, 25);
+  expectWellFormed (p, g);
+  expectEqualsBruteForce (p, g);
+}
+
+TEST (NeighborGraph, FlatAndDegenerateExtents)
+{
+  // All points on the plane z = 0, and a cloud whose z extent is a few ulps.
+  Points flat = uniformCube (4000, 15, Eigen::Vector3f (1.f, 1.f, 0.f));
+  expectEqualsBruteForce (flat, build (flat, 16));
+  Points thin = uniformCube (3000, 16, Eigen::Vector3f (1e-3f, 1e-3f, 1e-3f));
+  for (auto& x : thin)
+    x[2] = 1.f + x[2] * 1e-4f;
+  expectEqualsBruteForce (thin, build (thin, 10));
+}
+
+TEST (NeighborGraph, FarOutliers)
+{
+  // A dense blob with a few samples far away on every side: their neighbours are in the blob.
+  Points p = uniformCube (3000, 17, Eigen::Vector3f (0.01f, 0.01f, 0.01f));
+  p.emplace_back (1000.f, 0.f, 0.f);
+  p.emplace_back (-1000.f, 5.f, 0.f);
+  p.emplace_back (0.f, 0.f, 500.f);
+  p.emplace_back (1000.f, 0.001f, 0.f);
+  const NeighborGraph g = build (p, 8);
+  expectWellFormed (p, g);
+  expectEqualsBruteForce (p, g);
+}
+
+TEST (NeighborGraph, MultiScaleClouds)
+{
+  // Samples whose spacing grows geometrically, around nested clusters of very different sizes:
+  // the neighbours of most samples lie far outside the cells next to theirs.
+  std::mt19937 rng (19);
+  std::normal_distribution<float> g (0.f, 1.f);
+  Points p;
+  const auto gauss = [&rng, &g] () { return Eigen::Vector3f (g (rng), g (rng), g (rng)); };
+  for (int i = 0; i < 150; ++i)
+    p.push_back (std::pow (1.2f, static_cast<float> (i)) * gauss ().normalized ());
+  for (float scale : {1e-4f, 1e-2f, 1.f, 1e2f})
+    for (int i = 0; i < 300; ++i)
+      p.push_back (Eigen::Vector3f (5.f, -3.f, 2.f) + scale * gauss ());
+  std::shuffle (p.begin (), p.end (), rng);
+  for (int k : {1, 5, 40})
+  {
+    const NeighborGraph graph = build (p, k);
+    expectWellFormed (p, graph);
+    expectEqualsBruteForce (p, graph);
+  }
+}
+
+TEST (NeighborGraph, NeighboursBeyondTheFirstCells)
+{
+  // A configuration built so that the true neighbours of q lie farther from q's cell than the
+  // 5x5x5 cells around it, while the cells next to it already hold enough (but farther)
+  // candidates: q at one corner of a cell of side 2, a tight cluster of 24 samples at the opposite
+  // corner, a few samples just past the side-4 cube around them on q's side, and one far sample
+  // that sets the grid's scale (cells of side 1024 / 2^d). Whatever the builder's internal cell
+  // choice, the result must equal brute force.
+  std::mt19937 rng (21);
+  std::uniform_real_distribution<float> u (0.f, 1e-3f);
+  Points p;
+  p.emplace_back (0.f, 0.f, 0.f);
+  for (int i = 0; i < 23; ++i)
+    p.emplace_back (u (rng), u (rng), u (rng));
+  p.emplace_back (1.9f, 1.9f, 1.9f); // q
+  for (int i = 0; i < 5; ++i)
+    p.emplace_back (4.05f + 0.01f * static_cast<float> (i), 1.9f, 1.9f);
+  p.emplace_back (1000.f, 1000.f, 1000.f);
+  for (int k : {1, 3, 5})
+  {
+    const NeighborGraph graph = build (p, k);
+    EXPECT_EQ (graph.neighbors (24)[0], 25u);
+    expectEqualsBruteForce (p, graph);
+  }
+}
+
+TEST (NeighborGraph, ManyDuplicatesAmongOtherPoints)
+{
+  // 50,000 copies of one position inside a cloud: their rows follow the tie rule; the other rows
+  // (some of which reach the copies) equal brute force.
+  const int k = 30;
+  Points p = uniformCube (3000, 20);
+  const Eigen::Vector3f dup = p[17];
+  const std::size_t first_copy = p.size ();
+  p.insert (p.end (), 50000, dup);
+  // A copy with a small index, the original among the copies.
+  std::swap (p[17], p[first_copy + 100]);
+  const NeighborGraph graph = build (p, k);
+
+  std::vector<std::uint32_t> copies;
+  for (std::size_t i = 0; i < p.size () && copies.size () <= static_cast<std::size_t> (k); ++i)
+    if (p[i] == dup)
+      copies.push_back (static_cast<std::uint32_t> (i));
+  std::vector<std::pair<float, std::uint32_t>> all;
+  for (std::size_t i = 0; i < p.size (); ++i)
+  {
+    const std::uint32_t* r = graph.neighbors (i);
+    if (p[i] == dup)
+    {
+      // The k smallest indices among the other copies.
+      int t = 0;
+      for (std::uint32_t c : copies)
+      {
+        if (c == i || t == k)
+          continue;
+        ASSERT_EQ (r[t++], c) << "row " << i;
+      }
+      continue;
+    }
+    all.clear ();
+    for (std::size_t j = 0; j < p.size (); ++j)
+      if (j != i)
+        all.emplace_back (dist2 (p, i, j), static_cast<std::uint32_t> (j));
+    std::partial_sort (all.begin (), all.begin () + k, all.end ());
+    for (int t = 0; t < k; ++t)
+      ASSERT_EQ (r[t], all[t].second) << "row " << i << " position " << t;
+  }
+}
+
+TEST (NeighborGraph, WildOutliers)
+{
+  // Outliers 10^9 to 10^15 times farther than the sample spacing: the finest cells of the bounding
+  // box hold the whole cloud.
+  Points p = cubeFaces (3000, 22, 0.001f);
+  p.emplace_back (1e9f, 0.f, 0.f);
+  expectEqualsBruteForce (p, build (p, 10));
+  p.emplace_back (0.f, -3e12f, 1e12f);
+  p.emplace_back (0.f, 0.f, 1e12f);
+  expectEqualsBruteForce (p, build (p, 40));
+
+  // Cells of side 1 (an extent of 1.5e6 from the origin): a tight cluster at one corner of the
+  // cell [10, 11)^3, q at the opposite corner, and b just outside the 3x3x3 cells around it but
+  // nearer to q than the cluster.
+  Points r;
+  r.emplace_back (0.f, 0.f, 0.f);
+  r.emplace_back (1.5e6f, 0.f, 0.f);
+  std::mt19937 rng (23);
+  std::uniform_real_distribution<float> u (0.f, 1e-4f);
+  for (int i = 0; i < 61; ++i)
+    r.emplace_back (10.f + u (rng), 10.f + u (rng), 10.f + u (rng));
+  const std::uint32_t q_index = static_cast<std::uint32_t> (r.size ());
+  r.emplace_back (10.999f, 10.999f, 10.999f);
+  r.emplace_back (12.3f, 10.999f, 10.999f); // b
+  for (int k : {1, 3})
+  {
+    const NeighborGraph graph = build (r, k);
+    EXPECT_EQ (graph.neighbors (q_index)[0], q_index + 1);
+    expectEqualsBruteForce (r, graph);
+  }
+
+  // A microscopic cluster (spread 10^-12, near the origin where floats resolve it) inside a unit
+  // cloud, with exact duplicates of one of its samples.
+  std::normal_distribution<float> g (0.f, 1.f);
+  Points q = uniformCube (2000, 24);
+  for (int i = 0; i < 300; ++i)
+    q.push_back (1e-12f * Eigen::Vector3f (g (rng), g (rng), g (rng)));
+  q.insert (q.end (), 100, q.back ());
+  std::shuffle (q.begin (), q.end (), rng);
+  for (int k : {3, 30})
+  {
+    const NeighborGraph graph = build (q, k);
+    expectWellFormed (q, graph);
+    expectEqualsBruteForce (q, graph);
+  }
+}
+
+TEST (NeighborGraph, OverwritesAGraphOfTheSameShape)
+{
+  const Points a = cubeFaces (5000, 25), b = uniformCube (5000, 26);
+  NeighborGraph reused = build (a, 12);
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (b, 12, 2, reused));
+  EXPECT_TRUE (sameGraph (reused, build (b, 12)));
+}
+
+TEST (NeighborGraph, IndependentOfThreadCount)
+{
+  const Points p = cubeFaces (200000, 18, 0.002f);
+  NeighborGraph g1, g2, g0;
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 1, g1));
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 2, g2));
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 0, g0));
+  EXPECT_TRUE (sameGraph (g1, g2));
+  EXPECT_TRUE (sameGraph (g1, g0));
+}
