@@ -1,0 +1,108 @@
+/*
+ * rspd_make_scene and rspd_evaluate as a user runs them: success paths and bad input.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "cli_helpers.h"
+
+#include <gtest/gtest.h>
+
+using rspd_test::runTool;
+
+namespace
+{
+#define REQUIRE_TOOL(var, name)                                                                    \
+  const std::string var = rspd_test::toolPath (name);                                              \
+  if (var.empty ())                                                                                \
+    GTEST_SKIP () << name << " not built";
+
+std::uint64_t
+fileSize (const std::string& path)
+{
+  struct stat st;
+  return ::stat (path.c_str (), &st) == 0 ? static_cast<std::uint64_t> (st.st_size) : 0;
+}
+} // namespace
+
+TEST (MakeSceneCli, WritesCloudAndTruthOfTheRequestedSize)
+{
+  REQUIRE_TOOL (tool, "rspd_make_scene");
+  rspd_test::TempDir dir;
+  const auto r = runTool (tool, {"cube", dir.file ("cube"), "-n", "5000", "--noise", "0.005", "--rotate",
+                                 "--scale", "1000", "--offset", "1000", "0", "0", "--seed", "3"});
+  ASSERT_EQ (r.status, 0) << r.err;
+  EXPECT_NE (r.out.find ("5000 points"), std::string::npos) << r.out;
+  EXPECT_EQ (fileSize (dir.file ("cube.gt")), 4u * 5000u);
+  const std::string pcd = rspd_test::fileText (dir.file ("cube.pcd"));
+  EXPECT_NE (pcd.find ("POINTS 5000"), std::string::npos);
+  EXPECT_NE (pcd.find ("DATA binary"), std::string::npos);
+}
+
+TEST (MakeSceneCli, ListsScenesAndRefusesBadUsage)
+{
+  REQUIRE_TOOL (tool, "rspd_make_scene");
+  const auto list = runTool (tool, {"--list"});
+  EXPECT_EQ (list.status, 0);
+  for (const char* s : {"cube", "room", "staircase", "facade", "industrial"})
+    EXPECT_NE (list.out.find (s), std::string::npos) << s;
+  EXPECT_EQ (runTool (tool, {}).status, 2);
+  EXPECT_EQ (runTool (tool, {"no_such_scene", "/tmp/x"}).status, 2);
+  EXPECT_EQ (runTool (tool, {"cube", "/tmp/x", "-n", "many"}).status, 2);
+  const auto unwritable = runTool (tool, {"cube", "/nonexistent_dir/x", "-n", "100"});
+  EXPECT_EQ (unwritable.status, 1);
+  EXPECT_EQ (rspd_test::lineCount (unwritable.err), 1) << unwritable.err;
+}
+
+TEST (EvaluateCli, TruthAgainstItselfScoresOneAndJsonHasTheKeys)
+{
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (tool, "rspd_evaluate");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"staircase", dir.file ("s"), "-n", "20000"}).status, 0);
+  const auto text = runTool (tool, {dir.file ("s.pcd"), dir.file ("s.gt"), dir.file ("s.gt")});
+  ASSERT_EQ (text.status, 0) << text.err;
+  EXPECT_NE (text.out.find ("F1: 1.0"), std::string::npos) << text.out;
+  EXPECT_NE (text.out.find ("found: 30/30"), std::string::npos) << text.out;
+  const auto json = runTool (tool, {dir.file ("s.pcd"), dir.file ("s.gt"), dir.file ("s.gt"), "--json"});
+  ASSERT_EQ (json.status, 0);
+  for (const char* key : {"\"precision\"", "\"recall\"", "\"f1\"", "\"found\"", "\"planes\"", "\"detected\"",
+                          "\"fragments\"", "\"false_planes\""})
+    EXPECT_NE (json.out.find (key), std::string::npos) << key;
+}
+
+TEST (EvaluateCli, ScoresADetectionWrittenByRspdSegment)
+{
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (segment, "rspd_segment");
+  REQUIRE_TOOL (tool, "rspd_evaluate");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"cube", dir.file ("c"), "-n", "30000"}).status, 0);
+  ASSERT_EQ (runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("det.pcd")}).status, 0);
+  const auto r = runTool (tool, {dir.file ("c.pcd"), dir.file ("c.gt"), dir.file ("det.pcd")});
+  ASSERT_EQ (r.status, 0) << r.err;
+  EXPECT_NE (r.out.find ("found: 6/6"), std::string::npos) << r.out;
+}
+
+TEST (EvaluateCli, BadInputExitsOneWithOneLine)
+{
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (tool, "rspd_evaluate");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"plane", dir.file ("p"), "-n", "1000"}).status, 0);
+  ASSERT_EQ (runTool (make, {"plane", dir.file ("q"), "-n", "999"}).status, 0);
+  {
+    std::ofstream junk (dir.file ("junk.pcd"));
+    junk << "this is not a point cloud\n";
+  }
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{dir.file ("missing.pcd"), dir.file ("p.gt"), dir.file ("p.gt")},
+        std::vector<std::string>{dir.file ("p.pcd"), dir.file ("q.gt"), dir.file ("p.gt")},   // 999 labels for 1000 points
+        std::vector<std::string>{dir.file ("junk.pcd"), dir.file ("p.gt"), dir.file ("p.gt")},
+        std::vector<std::string>{dir.file ("p.pcd"), dir.file ("p.gt"), dir.file ("junk.pcd")}})
+  {
+    const auto r = runTool (tool, args);
+    EXPECT_EQ (r.status, 1) << args[0] << " " << args[1] << " " << args[2];
+    EXPECT_EQ (rspd_test::lineCount (r.err), 1) << r.err;
+  }
+  EXPECT_EQ (runTool (tool, {}).status, 2);
+  EXPECT_EQ (runTool (tool, {dir.file ("p.pcd"), dir.file ("p.gt"), dir.file ("p.gt"), "--voxel", "-1"}).status, 2);
+}
