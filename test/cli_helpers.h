@@ -73,13 +73,14 @@ private:
   std::string path_;
 };
 
-/** Run \a tool with \a args, stdout and stderr captured. */
+/** Run \a tool with \a args (after an optional VAR=value environment prefix), stdout and stderr
+  * captured. */
 inline ToolRun
-runTool (const std::string& tool, const std::vector<std::string>& args)
+runTool (const std::string& tool, const std::vector<std::string>& args, const std::string& env = "")
 {
   ToolRun r;
   TempDir dir;
-  std::string cmd = shellQuoted (tool);
+  std::string cmd = (env.empty () ? std::string () : env + " ") + shellQuoted (tool);
   for (const auto& a : args)
     cmd += " " + shellQuoted (a);
   cmd += " > " + shellQuoted (dir.file ("out")) + " 2> " + shellQuoted (dir.file ("err")) + " < /dev/null";

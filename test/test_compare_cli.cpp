@@ -2,6 +2,8 @@
  * pcl_rspd tests: the rspd_compare command-line tool, run as a separate program.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include "cli_helpers.h"
+
 #include <pcl_rspd/synthetic_scenes.h>
 
 #include <pcl/io/pcd_io.h>
@@ -23,86 +25,14 @@ namespace
 {
 const std::string kCompare = std::string (PCL_RSPD_BINARY_DIR) + "/rspd_compare";
 
-/** \brief Exit status and output of one run. */
-struct RunResult
-{
-  int status = -1;  ///< exit status, or 128 + signal
-  std::string out;
-  std::string err;
-};
-
-/** \brief A temporary directory, removed with its files at the end of the test. */
-class ScratchDir
-{
-public:
-  ScratchDir ()
-  {
-    const char* tmp = std::getenv ("TMPDIR");
-    std::string pattern = std::string (tmp && *tmp ? tmp : "/tmp") + "/rspd_compare_test_XXXXXX";
-    std::vector<char> buffer (pattern.begin (), pattern.end ());
-    buffer.push_back ('\0');
-    if (::mkdtemp (buffer.data ()))
-      path_ = buffer.data ();
-  }
-  ~ScratchDir ()
-  {
-    for (const std::string& f : files_)
-      std::remove (f.c_str ());
-    if (!path_.empty ())
-      ::rmdir (path_.c_str ());
-  }
-  /** \brief Path of \a name inside the directory (removed at the end). */
-  std::string
-  file (const std::string& name)
-  {
-    files_.push_back (path_ + "/" + name);
-    return files_.back ();
-  }
-  bool
-  ok () const { return !path_.empty (); }
-
-private:
-  std::string path_;
-  std::vector<std::string> files_;
-};
-
-std::string
-shellQuote (const std::string& s)
-{
-  std::string q = "'";
-  for (const char c : s)
-    q += c == '\'' ? std::string ("'\\''") : std::string (1, c);
-  return q + "'";
-}
-
-std::string
-readWholeFile (const std::string& path)
-{
-  std::ifstream in (path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf ();
-  return ss.str ();
-}
+using RunResult = rspd_test::ToolRun;
+using ScratchDir = rspd_test::TempDir;
 
 /** \brief Run rspd_compare with \a args (and optional VAR=value environment prefix). */
 RunResult
 runCompare (const std::vector<std::string>& args, const std::string& env = "")
 {
-  RunResult r;
-  ScratchDir dir;
-  if (!dir.ok ())
-    return r;
-  const std::string out = dir.file ("stdout"), err = dir.file ("stderr");
-  std::string cmd = env.empty () ? std::string () : env + " ";
-  cmd += shellQuote (kCompare);
-  for (const std::string& a : args)
-    cmd += " " + shellQuote (a);
-  cmd += " > " + shellQuote (out) + " 2> " + shellQuote (err);
-  const int status = std::system (cmd.c_str ());
-  r.status = WIFEXITED (status) ? WEXITSTATUS (status) : 128 + WTERMSIG (status);
-  r.out = readWholeFile (out);
-  r.err = readWholeFile (err);
-  return r;
+  return rspd_test::runTool (kCompare, args, env);
 }
 
 /** \brief The table row of \a method split into words, empty if there is none. */
@@ -124,14 +54,6 @@ row (const std::string& out, const std::string& method)
   return {};
 }
 
-std::size_t
-countLines (const std::string& s)
-{
-  std::size_t n = 0;
-  for (const char c : s)
-    n += c == '\n';
-  return n;
-}
 
 /** \brief Skip unless the real tool is there (not absent, not a placeholder). */
 #define REQUIRE_COMPARE_BINARY()                                                               \
@@ -179,7 +101,7 @@ TEST (CompareCli, JsonHasMethods)
   ASSERT_EQ (r.status, 0) << r.err;
   ASSERT_FALSE (r.out.empty ());
   EXPECT_EQ (r.out[0], '{');
-  EXPECT_EQ (countLines (r.out), 1u);
+  EXPECT_EQ (rspd_test::lineCount (r.out), 1);
   EXPECT_NE (r.out.find ("\"methods\": ["), std::string::npos);
   EXPECT_NE (r.out.find ("\"normals_seconds\""), std::string::npos);
   for (const char* method : {"rspd", "sac", "rg"})
@@ -248,7 +170,7 @@ TEST (CompareCli, CloudFileWithTruth)
 
   const RunResult mismatch = runCompare ({cloud, short_truth});
   EXPECT_EQ (mismatch.status, 1);
-  EXPECT_EQ (countLines (mismatch.err), 1u) << mismatch.err;
+  EXPECT_EQ (rspd_test::lineCount (mismatch.err), 1) << mismatch.err;
   EXPECT_TRUE (mismatch.out.empty ());
 }
 
@@ -257,7 +179,7 @@ TEST (CompareCli, MissingFileExitsOne)
   REQUIRE_COMPARE_BINARY ();
   const RunResult r = runCompare ({"/nonexistent/cloud.pcd"});
   EXPECT_EQ (r.status, 1);
-  EXPECT_EQ (countLines (r.err), 1u) << r.err;
+  EXPECT_EQ (rspd_test::lineCount (r.err), 1) << r.err;
   EXPECT_NE (r.err.find ("/nonexistent/cloud.pcd"), std::string::npos);
   EXPECT_TRUE (r.out.empty ());
 }
@@ -284,6 +206,6 @@ TEST (CompareCli, UsageErrorsExitTwo)
     for (const auto& a : args)
       joined += a + " ";
     EXPECT_EQ (r.status, 2) << joined;
-    EXPECT_EQ (countLines (r.err), 1u) << joined << ": " << r.err;
+    EXPECT_EQ (rspd_test::lineCount (r.err), 1) << joined << ": " << r.err;
   }
 }
