@@ -106,3 +106,21 @@ TEST (EvaluateCli, BadInputExitsOneWithOneLine)
   EXPECT_EQ (runTool (tool, {}).status, 2);
   EXPECT_EQ (runTool (tool, {dir.file ("p.pcd"), dir.file ("p.gt"), dir.file ("p.gt"), "--voxel", "-1"}).status, 2);
 }
+
+TEST (SegmentCli, OutputIsByteIdenticalForOneAndTwoThreads)
+{
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (segment, "rspd_segment");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"room", dir.file ("r"), "-n", "60000"}).status, 0);
+  ASSERT_EQ (runTool (segment, {dir.file ("r.pcd"), "-o", dir.file ("one.pcd"), "--planes", dir.file ("one.csv")},
+                      "OMP_NUM_THREADS=1").status, 0);
+  ASSERT_EQ (runTool (segment, {dir.file ("r.pcd"), "-o", dir.file ("two.pcd"), "--planes", dir.file ("two.csv")},
+                      "OMP_NUM_THREADS=2").status, 0);
+  ASSERT_EQ (runTool (segment, {dir.file ("r.pcd"), "-o", dir.file ("flag.pcd"), "--threads", "2"}).status, 0);
+  const std::string one = rspd_test::fileText (dir.file ("one.pcd"));
+  EXPECT_GT (one.size (), 60000u * 12u);
+  EXPECT_TRUE (one == rspd_test::fileText (dir.file ("two.pcd")));
+  EXPECT_TRUE (one == rspd_test::fileText (dir.file ("flag.pcd")));
+  EXPECT_EQ (rspd_test::fileText (dir.file ("one.csv")), rspd_test::fileText (dir.file ("two.csv")));
+}
