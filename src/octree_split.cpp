@@ -18,11 +18,20 @@ namespace
 class OctreeSplitter
 {
 public:
-  OctreeSplitter (const PointSet& points, const DetectorParameters& params)
-    : points_ (points), params_ (params), order_ (points.size ())
+  OctreeSplitter (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>* subset)
+    : points_ (points), params_ (params)
   {
-    std::iota (order_.begin (), order_.end (), 0u);
+    if (subset)
+      order_ = *subset;
+    else
+    {
+      order_.resize (points.size ());
+      std::iota (order_.begin (), order_.end (), 0u);
+    }
   }
+
+  std::size_t
+  size () const { return order_.size (); }
 
   /** Algorithm 1 on the slice [begin, end) of order_, cell of corner lo and edge size.
     * Patches found are appended to out in depth-first order. */
@@ -70,10 +79,10 @@ public:
   rootCell (Eigen::Vector3d& lo, double& size) const
   {
     Eigen::Vector3d mn = Eigen::Vector3d::Constant (HUGE_VAL), mx = Eigen::Vector3d::Constant (-HUGE_VAL);
-    for (const auto& p : points_.points)
+    for (const auto i : order_)
     {
-      mn = mn.cwiseMin (p.cast<double> ());
-      mx = mx.cwiseMax (p.cast<double> ());
+      mn = mn.cwiseMin (points_.points[i].cast<double> ());
+      mx = mx.cwiseMax (points_.points[i].cast<double> ());
     }
     size = (mx - mn).maxCoeff ();
     // A cube (octree cells stay cubes), centred on the box.
@@ -120,16 +129,17 @@ private:
 } // namespace
 
 std::vector<PlanarPatch>
-splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats)
+splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats,
+            const std::vector<std::uint32_t>* subset)
 {
   std::vector<PlanarPatch> patches;
-  if (points.size () == 0)
+  OctreeSplitter splitter (points, params, subset);
+  if (splitter.size () == 0)
     return patches;
-  OctreeSplitter splitter (points, params);
   Eigen::Vector3d lo;
   double size;
   splitter.rootCell (lo, size);
-  splitter.detect (0, points.size (), lo, size, 0, patches);
+  splitter.detect (0, splitter.size (), lo, size, 0, patches);
   if (stats)
   {
     stats->cells_tested += splitter.cells_tested_;

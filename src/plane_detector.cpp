@@ -6,6 +6,7 @@
 #include <pcl_rspd/patch_growth.h>
 #include <pcl_rspd/patch_merge.h>
 #include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/robust_statistics.h>
 
 #include <pcl/console/print.h>
 
@@ -38,6 +39,29 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
   }
   return updated;
 }
+/** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
+void
+growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                      std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, DetectorStatistics& st)
+{
+  for (;;)
+  {
+    if (st.iterations >= params.max_iterations)
+    {
+      st.hit_iteration_cap = true;
+      PCL_WARN ("[pcl::rspd::detectPlanes] stopped after %d grow-merge iterations with patches still "
+                "unstable\n", st.iterations);
+      return;
+    }
+    ++st.iterations;
+    growPatches (points, graph, patches, labels);
+    st.merges += mergePatches (points, graph, patches, labels);
+    const std::size_t updated = reestimateGrownPatches (points, params, patches);
+    st.reestimations += updated;
+    if (updated == 0)
+      return;
+  }
+}
 } // namespace
 
 void
@@ -61,22 +85,38 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   st.split_seconds = std::chrono::duration<double> (t1 - t0).count ();
 
   // Grow and merge until no patch needs an update (Sec. 3.3-3.5).
-  for (;;)
+  growMergeUntilStable (points, graph, params, patches, labels, st);
+
+  if (params.small_cell_size > 0 && params.small_cell_size < params.min_patch_size && !patches.empty ())
   {
-    if (st.iterations >= params.max_iterations)
+    // Small-cell pass (departure, see DetectorParameters::small_cell_size).
+    std::vector<double> mnds;
+    for (const auto& p : patches)
+      mnds.push_back (p.mnd);
+    const double max_mnd = medianInPlace (mnds);
+    std::vector<std::uint32_t> left;
+    for (std::uint32_t i = 0; i < labels.size (); ++i)
+      if (labels[i] == kNoPatch)
+        left.push_back (i);
+    DetectorParameters small = params;
+    small.min_patch_size = params.small_cell_size;
+    std::vector<PlanarPatch> seeds = splitPhase (points, small, &st, &left);
+    for (auto& seed : seeds)
     {
-      st.hit_iteration_cap = true;
-      PCL_WARN ("[pcl::rspd::detectPlanes] stopped after %d grow-merge iterations with patches still "
-                "unstable\n", st.iterations);
-      break;
+      if (seed.mnd > max_mnd)
+        continue; // noisier than every plane found: an edge band of bent normals, not a plane
+      for (const auto i : seed.members)
+        labels[i] = static_cast<std::uint32_t> (patches.size ());
+      patches.push_back (std::move (seed));
+      ++st.small_seeds;
     }
-    ++st.iterations;
-    growPatches (points, graph, patches, labels);
-    st.merges += mergePatches (points, graph, patches, labels);
-    const std::size_t updated = reestimateGrownPatches (points, params, patches);
-    st.reestimations += updated;
-    if (updated == 0)
-      break;
+    if (st.small_seeds > 0)
+    {
+      growMergeUntilStable (points, graph, params, patches, labels, st);
+      patches.erase (std::remove_if (patches.begin (), patches.end (),
+                                     [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
+                     patches.end ());
+    }
   }
 
   st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();

@@ -28,10 +28,13 @@ namespace rspd
   * \param[in] points valid samples with normals
   * \param[in] params constants (ε = params.min_patch_size)
   * \param[out] stats cells tested and patches found are added (may be null)
+  * \param[in] subset if given, the octree is built over these samples only (the root cell is their
+  *            bounding cube); otherwise over all samples
   * \return the patches, in depth-first octree order (deterministic)
   */
 std::vector<PlanarPatch>
-splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr);
+splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr,
+            const std::vector<std::uint32_t>* subset = nullptr);
 
 } // namespace rspd
 } // namespace pcl

@@ -42,6 +42,11 @@ struct DetectorParameters
   /** \brief Departure (sign ambiguity): flip each normal into the hemisphere of the cell's dominant
     * direction before the component-wise median of Eq. 4. false = the paper's plain median. */
   bool align_normals = true;
+  /** \brief Departure (small planes): once grow-merge is stable, split the samples no patch holds
+    * again with cells down to this many samples (0 = off, the paper), keep the new seeds whose MND
+    * is no larger than the largest MND of the planes already found, grow-merge again, and drop every
+    * plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a neighbour. */
+  std::size_t small_cell_size = 0;
   /** \brief Safety cap on grow-merge iterations (Sec. 3.5); hitting it is logged. */
   int max_iterations = 100;
   /** \brief Octree depth cap: subdivision also stops where all samples of a cell coincide. */
@@ -68,6 +73,7 @@ struct DetectorStatistics
   int iterations = 0;                ///< grow-merge iterations
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
   std::size_t merges = 0;            ///< patches absorbed by merging
+  std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept
   bool hit_iteration_cap = false;
   double graph_seconds = 0.0;        ///< building the k-NN graph (wall time)
   double normals_seconds = 0.0;      ///< estimating normals (0 when given)

@@ -72,7 +72,13 @@ struct RobustPlane
   *  - w and l of T1 are the extents along the two in-plane principal axes of the cell's samples,
   *    never an axis-aligned box, so the test does not depend on the cloud's orientation;
   *  - positions are centred in double precision before any statistic, so a scene far from the
-  *    origin gives the planes it gives at the origin.
+  *    origin gives the planes it gives at the origin;
+  *  - small planes (setSmallPlaneSeeding(false) for the paper): a plane whose ε-sample octree cells
+  *    always mix with a neighbour (a stair riser between two treads) is never seeded by Algorithm 1.
+  *    Once grow-merge is stable, the samples no plane holds are split again with cells down to k + 1
+  *    samples; a new seed is kept only if its MND is at most the median MND of the planes found (the
+  *    scene's own noise level; edge bands of bent normals are noisier and would bridge faces through
+  *    M2), grow-merge runs again, and planes still smaller than ε are dropped.
   *
   * Without setInputNormals, normals are estimated by PCA over the same k-neighbourhoods that form
   * the growth graph. Without setSearchMethod, the graph comes from the library's own exact k-NN
@@ -220,6 +226,16 @@ public:
   bool
   getAlignNormalsBeforeMedian () const { return params_.align_normals; }
 
+  /** \brief Small-plane pass (default on): after the paper's split-grow-merge, split the unassigned
+    * samples again with cells down to k + 1 samples (the normal-estimation neighbourhood), keep seeds
+    * whose MND is at most the median MND of the planes found, grow-merge, and drop planes smaller
+    * than ε. false = the paper's single split. */
+  void
+  setSmallPlaneSeeding (bool enable);
+  /** \brief Whether the small-plane pass runs. */
+  bool
+  getSmallPlaneSeeding () const { return small_plane_seeding_; }
+
   /** \brief Safety cap on grow-merge iterations (default 100); reaching it is logged. */
   void
   setMaxGrowMergeIterations (int iterations);
@@ -336,6 +352,7 @@ protected:
   int k_ = 50;
   double min_patch_ratio_ = 0.001;
   std::size_t min_patch_size_ = 0;
+  bool small_plane_seeding_ = true;
   pcl::rspd::DetectorParameters params_;
 
   int model_type_;

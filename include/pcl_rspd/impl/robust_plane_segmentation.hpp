@@ -245,6 +245,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setAlignNormalsBeforeMedian (bool alig
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSmallPlaneSeeding (bool enable)
+{
+  small_plane_seeding_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setMaxGrowMergeIterations (int iterations)
 {
   if (iterations < 1)
@@ -419,6 +426,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
   params_.min_patch_size = min_patch_size_ > 0
       ? min_patch_size_
       : std::max<std::size_t> (10, static_cast<std::size_t> (std::ceil (min_patch_ratio_ * static_cast<double> (n))));
+  params_.small_cell_size = small_plane_seeding_ ? static_cast<std::size_t> (k_ + 1) : 0;
   return true;
 }
 
