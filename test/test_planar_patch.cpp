@@ -95,6 +95,8 @@ TEST (PlanarityTest, NoiseExperimentMdpAndMndStayAtZeroSpreadWhilePcaRatioRises)
     EXPECT_DOUBLE_EQ (r.estimate.mdp (), prm.distance_floor_ratio * std::max (r.estimate.width, r.estimate.length));
     EXPECT_DOUBLE_EQ (r.estimate.mnd (), prm.normal_deviation_floor);
     const double tau = pcaRatio (s);
+    std::printf ("    p = %.3f, sigma = %.3f: MDP %.2g, MND %.2g rad, PCA tau %.3f, outliers %.3f\n", ps[i], sigmas[i],
+                 r.estimate.mdp (), r.estimate.mnd (), tau, r.outlier_ratio);
     EXPECT_GT (tau, last_tau) << "p = " << ps[i];
     last_tau = tau;
     // T3: p of 10,000 outliers is p / (1 + p) of the samples: 11 %, 20 %, 33 %.
