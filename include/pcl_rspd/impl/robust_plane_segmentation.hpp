@@ -439,6 +439,19 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   const auto t0 = std::chrono::steady_clock::now ();
   if (search_)
   {
+    // pcl::KdTreeFLANN splits its nodes at (min + max) / 2 in float; beyond half the float range
+    // that sum overflows and FLANN aborts on an assertion (fuzz/regressions/README.md). Refuse.
+    const float limit = 0.5f * std::numeric_limits<float>::max ();
+    for (const auto i : points_.input_indices)
+    {
+      const PointT& p = (*input_)[i];
+      if (!(std::abs (p.x) < limit && std::abs (p.y) < limit && std::abs (p.z) < limit))
+      {
+        PCL_ERROR ("[pcl::%s::segment] point %d has a coordinate beyond +-%g, which the search method "
+                   "cannot index\n", name, static_cast<int> (i), static_cast<double> (limit));
+        return false;
+      }
+    }
     // The caller's search structure, over the valid samples only.
     auto valid = std::make_shared<pcl::Indices> (points_.input_indices.begin (), points_.input_indices.end ());
     search_->setInputCloud (input_, valid);

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it after
+# scripts/test.sh). Builds in ./build-asan with -DPCL_RSPD_SANITIZE=ON (library, tools and tests
+# instrumented; Debian's PCL is not) and runs ctest there. Any memory error, leak or undefined
+# behaviour aborts the process that hit it, so the test fails. Extra arguments go to ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install_deps.sh   # g++ brings the sanitizer runtimes (libasan8, libubsan1)
+
+# Exported, so every process inherits them: the test programs, the tools the CLI tests run (and the
+# children rspd_compare forks), and the test programs run at build time by gtest_discover_tests.
+# abort_on_error: an ASan report ends in abort(), which ctest shows as "Subprocess aborted".
+# No LeakSanitizer suppressions are needed: the suite runs leak-free, PCL/FLANN/libgomp included.
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+
+cmake -S . -B build-asan -DPCL_RSPD_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build build-asan -j"$(nproc)"
+
+# install_and_consume builds a consumer against the installed (instrumented) libpcl_rspd: the
+# consumer must link the sanitizer runtimes too, or ASan refuses to start ("ASan runtime does not
+# come first in initial library list"). CMake takes CXXFLAGS/LDFLAGS from the environment when it
+# configures the consumer's fresh build directory; nothing else is configured during ctest.
+sanitize="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
+CXXFLAGS="$sanitize" LDFLAGS="$sanitize" \
+  ctest --test-dir build-asan --output-on-failure -j"$(nproc)" "$@"
