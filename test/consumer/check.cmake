@@ -16,4 +16,8 @@ endforeach()
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
+# The installed tools run from the prefix (install RPATH), when tools are built.
+if(EXISTS ${WORK_DIR}/prefix/bin/rspd_make_scene)
+  run(${WORK_DIR}/prefix/bin/rspd_make_scene --list)
+endif()
 message(STATUS "consumer built and found 3 planes")
