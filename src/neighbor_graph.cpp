@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <utility>
 
 /*
@@ -579,6 +580,62 @@ struct Block
   std::int64_t c[3];
 };
 
+/** \brief Rows of a dense table, either every sample's (slot = index) or only those of a few
+  * queries (slot_of maps a sample to its row). */
+struct DenseRows
+{
+  int k = 0;
+  const std::vector<std::uint32_t>* slot_of = nullptr;
+  std::uint32_t* data = nullptr;
+
+  std::uint32_t*
+  row (std::uint32_t id) const
+  {
+    const std::size_t slot = slot_of ? (*slot_of)[id] : id;
+    return data + slot * static_cast<std::size_t> (k);
+  }
+};
+
+/** \brief Where a searcher puts the row of a query: storage to write it to, then done (). */
+class RowSink
+{
+public:
+  virtual ~RowSink () = default;
+  /** \brief Storage for the row of \a id (for a dense table, it holds the row found so far). */
+  virtual std::uint32_t*
+  row (std::uint32_t id) = 0;
+  /** \brief The row of \a id is final. */
+  virtual void
+  done (std::uint32_t, const std::uint32_t*) {}
+};
+
+/** \brief Rows written in place into a dense table. */
+class DenseSink : public RowSink
+{
+public:
+  explicit DenseSink (const DenseRows& rows) : rows_ (rows) {}
+  std::uint32_t*
+  row (std::uint32_t id) override { return rows_.row (id); }
+
+private:
+  const DenseRows& rows_;
+};
+
+/** \brief Rows compressed into a NeighborGraph as soon as they are found (one per thread). */
+class AppendSink : public RowSink
+{
+public:
+  AppendSink (NeighborGraph& graph, int k) : appender_ (graph), scratch_ (static_cast<std::size_t> (k)) {}
+  std::uint32_t*
+  row (std::uint32_t) override { return scratch_.data (); }
+  void
+  done (std::uint32_t id, const std::uint32_t* row) override { appender_.setRow (id, row); }
+
+private:
+  NeighborGraph::Appender appender_;
+  std::vector<std::uint32_t> scratch_;
+};
+
 /** \brief Per-thread search state. */
 class Searcher
 {
@@ -588,16 +645,16 @@ public:
     : tree_ (tree), points_ (points), k_ (k), cands_ (k + 1), leaf_size_ (leaf_size)
   {}
 
-  /** \brief Answer the queries of \a leaf, writing their rows of \a graph.
+  /** \brief Answer the queries of \a leaf, writing their rows to \a rows.
     * \param[in] leaf the leaf
     * \param[in] is_query flags by sample index, or null: all samples are queries
     * \param[in] rows_hold_block_result each query's row already holds its k nearest among samples
     * that include the leaf's 3x3x3 block (see solveLevel); it is kept if that proves it final, and
-    * the query is searched otherwise
-    * \param[in,out] graph the graph */
+    * the query is searched otherwise (only with a dense sink)
+    * \param[in,out] rows where the rows go */
   void
   processLeaf (const Cell& leaf, const std::vector<char>* is_query, bool rows_hold_block_result,
-               NeighborGraph& graph)
+               RowSink& rows)
   {
     const int d = leaf.depth;
     const std::int64_t side = std::int64_t (1) << d;
@@ -619,11 +676,12 @@ public:
       if (is_query && !(*is_query)[id])
         continue;
       const float q[3] = {tree_.xs_[i], tree_.ys_[i], tree_.zs_[i]};
-      std::uint32_t* row = graph.row (id);
+      std::uint32_t* row = rows.row (id);
       const std::uint64_t self_key = CandidateSet::makeKey (0.f, id);
       if (have_prev && q[0] == qf_[0] && q[1] == qf_[1] && q[2] == qf_[2])
       {
         cands_.write (self_key, row);
+        rows.done (id, row);
         continue;
       }
       float seed = std::numeric_limits<float>::infinity ();
@@ -694,6 +752,7 @@ public:
         }
       }
       cands_.write (self_key, row);
+      rows.done (id, row);
       have_prev = true;
       prev_r = std::sqrt (static_cast<double> (cands_.worst ()));
     }
@@ -907,17 +966,19 @@ collectLeaves (const LinearOctree& tree, const Cell& cell, std::uint32_t leaf_si
   * float positions are separated long before. */
 constexpr int kMaxLevels = 4;
 
-/** \brief Rows of \a graph for the queries among the samples \a subset (all if null): their k
-  * nearest within \a subset.
+/** \brief Rows for the queries among the samples \a subset (all if null): their k nearest within
+  * \a subset, written to \a dense (in place) or, when it is null, compressed into \a graph.
   *
   * A finest-level leaf holding more than leaf_size distinct positions (a cloud whose extent is
   * over 10^6 times its sample spacing, such as one with a wild outlier) would cost its queries a
   * scan of the whole leaf each. Such leaves are solved as a separate problem instead, on the
   * samples of their 3x3x3 blocks, whose much smaller extent gives a much finer grid; a query keeps
-  * that result if nothing outside its block can be nearer, and is searched again otherwise. */
+  * that result if nothing outside its block can be nearer, and is searched again otherwise. That
+  * check reads the row back, so those (few) queries go through a small dense table. */
 void
 solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::uint32_t>* subset,
-            const std::vector<char>* is_query, int k, int threads, int level, NeighborGraph& graph)
+            const std::vector<char>* is_query, int k, int threads, int level, const DenseRows* dense,
+            NeighborGraph* graph)
 {
   LinearOctree tree;
   tree.build (points, subset, threads);
@@ -946,16 +1007,22 @@ solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::u
 #pragma omp parallel num_threads(threads)
   {
     Searcher searcher (tree, points, k, leaf_size);
+    std::unique_ptr<RowSink> sink;
+    if (dense)
+      sink.reset (new DenseSink (*dense));
+    else
+      sink.reset (new AppendSink (*graph, k));
 #pragma omp for schedule(dynamic, 16)
     for (std::int64_t l = 0; l < static_cast<std::int64_t> (leaves.size ()); ++l)
       if (!overfull[l])
-        searcher.processLeaf (leaves[l], is_query, false, graph);
+        searcher.processLeaf (leaves[l], is_query, false, *sink);
   }
   if (!any_overfull)
     return;
 
   std::vector<std::uint32_t> sub;
   std::vector<char> sub_query (points.size (), 0);
+  std::vector<std::uint32_t> queries; // the overfull leaves' queries, ascending
   {
     std::vector<char> in_sub (tree.ids_.size (), 0);
     for (std::size_t l = 0; l < leaves.size (); ++l)
@@ -973,37 +1040,192 @@ solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::u
       if (in_sub[i])
         sub.push_back (tree.ids_[i]);
   }
-  solveLevel (points, &sub, &sub_query, k, threads, level + 1, graph);
+
+  // Into a graph: the overfull leaves' queries get a dense table of their own for this step.
+  std::vector<std::uint32_t> slot_of, local_data;
+  DenseRows local;
+  if (!dense)
+  {
+    slot_of.assign (points.size (), std::numeric_limits<std::uint32_t>::max ());
+    for (std::uint32_t id = 0; id < points.size (); ++id)
+      if (sub_query[id])
+      {
+        slot_of[id] = static_cast<std::uint32_t> (queries.size ());
+        queries.push_back (id);
+      }
+    local_data.resize (queries.size () * static_cast<std::size_t> (k));
+    local.k = k;
+    local.slot_of = &slot_of;
+    local.data = local_data.data ();
+  }
+  const DenseRows& rows = dense ? *dense : local;
+  solveLevel (points, &sub, &sub_query, k, threads, level + 1, &rows, nullptr);
 
 #pragma omp parallel num_threads(threads)
   {
     Searcher searcher (tree, points, k, leaf_size);
+    DenseSink sink (rows);
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t l = 0; l < static_cast<std::int64_t> (leaves.size ()); ++l)
       if (overfull[l])
-        searcher.processLeaf (leaves[l], is_query, true, graph);
+        searcher.processLeaf (leaves[l], is_query, true, sink);
+  }
+  if (!dense)
+  {
+#pragma omp parallel num_threads(threads)
+    {
+      NeighborGraph::Appender appender (*graph);
+#pragma omp for schedule(static)
+      for (std::int64_t q = 0; q < static_cast<std::int64_t> (queries.size ()); ++q)
+        appender.setRow (queries[q], rows.row (queries[q]));
+    }
   }
 }
 
+bool
+validShape (std::size_t n, int k)
+{
+  // Row entries are 32-bit indices.
+  return k >= 1 && n > static_cast<std::size_t> (k) && n <= std::numeric_limits<std::uint32_t>::max ();
+}
+
 } // namespace
+
+// --- NeighborGraph ------------------------------------------------------------------------------
+
+NeighborGraph::NeighborGraph (std::size_t n, int k)
+  : k_ (k), n_ (n), offsets_ (n, 0)
+{
+  // A row is one zigzag varint (up to 10 bytes) and k - 1 deltas of up to 5 bytes; a page holds
+  // many rows, and a row never straddles two pages.
+  max_row_bytes_ = 10 + 5 * static_cast<std::size_t> (k > 1 ? k - 1 : 0);
+  page_shift_ = 18;
+  while ((std::size_t (1) << page_shift_) < 4 * max_row_bytes_)
+    ++page_shift_;
+  page_mask_ = (std::uint64_t (1) << page_shift_) - 1;
+}
+
+std::size_t
+NeighborGraph::memoryBytes () const
+{
+  return offsets_.capacity () * sizeof (std::uint64_t) + pages_.size () * (std::size_t (1) << page_shift_);
+}
+
+std::uint64_t
+NeighborGraph::newPage (std::uint8_t*& data)
+{
+  std::unique_ptr<std::uint8_t[]> page (new std::uint8_t[std::size_t (1) << page_shift_]);
+  data = page.get ();
+  std::uint64_t index;
+#pragma omp critical(pcl_rspd_neighbor_graph_pages)
+  {
+    index = pages_.size ();
+    pages_.push_back (std::move (page));
+  }
+  return index;
+}
+
+NeighborGraph::Appender::Appender (NeighborGraph& graph)
+  : graph_ (graph), sorted_ (static_cast<std::size_t> (graph.k ()))
+{}
+
+void
+NeighborGraph::Appender::setRow (std::size_t i, const std::uint32_t* row)
+{
+  const int k = graph_.k_;
+  // Insertion sort: rows are short (k ~ 50), and for them it beats std::sort's partitioning.
+  std::uint32_t* v = sorted_.data ();
+  v[0] = row[0];
+  for (int t = 1; t < k; ++t)
+  {
+    const std::uint32_t x = row[t];
+    int j = t;
+    for (; j > 0 && v[j - 1] > x; --j)
+      v[j] = v[j - 1];
+    v[j] = x;
+  }
+  if (page_ == nullptr || used_ + graph_.max_row_bytes_ > (std::size_t (1) << graph_.page_shift_))
+  {
+    page_index_ = graph_.newPage (page_);
+    used_ = 0;
+  }
+  graph_.offsets_[i] = (page_index_ << graph_.page_shift_) | used_;
+  std::uint8_t* out = page_ + used_;
+  const auto put = [&out] (std::uint64_t x) {
+    while (x >= 0x80)
+    {
+      *out++ = static_cast<std::uint8_t> (x | 0x80);
+      x >>= 7;
+    }
+    *out++ = static_cast<std::uint8_t> (x);
+  };
+  const std::int64_t first = static_cast<std::int64_t> (v[0]) - static_cast<std::int64_t> (i);
+  put ((static_cast<std::uint64_t> (first) << 1) ^ static_cast<std::uint64_t> (first >> 63));
+  for (int t = 1; t < k; ++t)
+  {
+    const std::uint32_t d = v[t] - v[t - 1];
+    if (d < 0x80)
+      *out++ = static_cast<std::uint8_t> (d); // most deltas: neighbours a few samples apart
+    else
+      put (d);
+  }
+  used_ = static_cast<std::size_t> (out - page_);
+}
+
+NeighborGraph
+NeighborGraph::fromTable (const NeighborTable& table)
+{
+  NeighborGraph graph (table.size (), table.k ());
+  Appender appender (graph);
+  for (std::size_t i = 0; i < table.size (); ++i)
+    appender.setRow (i, table.neighbors (i));
+  return graph;
+}
+
+// --- builders -----------------------------------------------------------------------------------
 
 bool
 buildKnnGraph (const std::vector<Eigen::Vector3f>& points, int k, int num_threads,
                NeighborGraph& graph)
 {
   const std::size_t n = points.size ();
-  // Row entries are 32-bit indices.
-  if (k < 1 || n <= static_cast<std::size_t> (k) || n > std::numeric_limits<std::uint32_t>::max ())
+  graph = NeighborGraph ();
+  if (!validShape (n, k))
+    return false;
+  const int threads = num_threads > 0 ? num_threads : omp_get_max_threads ();
+  graph = NeighborGraph (n, k);
+  solveLevel (points, nullptr, nullptr, k, threads, 0, nullptr, &graph);
+  return true;
+}
+
+bool
+buildKnnTable (const std::vector<Eigen::Vector3f>& points, int k, int num_threads, NeighborTable& table)
+{
+  const std::size_t n = points.size ();
+  if (!validShape (n, k))
   {
-    graph = NeighborGraph ();
+    table = NeighborTable ();
     return false;
   }
   const int threads = num_threads > 0 ? num_threads : omp_get_max_threads ();
-  // Every row is overwritten: a graph of the right shape is reused as it is.
-  if (graph.size () != n || graph.k () != k)
-    graph = NeighborGraph (n, k);
-  solveLevel (points, nullptr, nullptr, k, threads, 0, graph);
+  // Every row is overwritten: a table of the right shape is reused as it is.
+  if (table.size () != n || table.k () != k)
+    table = NeighborTable (n, k);
+  DenseRows rows;
+  rows.k = k;
+  rows.data = table.row (0);
+  solveLevel (points, nullptr, nullptr, k, threads, 0, &rows, nullptr);
   return true;
+}
+
+std::vector<std::uint32_t>
+spatialOrder (const std::vector<Eigen::Vector3f>& points, int num_threads)
+{
+  if (points.empty ())
+    return {};
+  LinearOctree tree;
+  tree.build (points, nullptr, num_threads > 0 ? num_threads : omp_get_max_threads ());
+  return std::move (tree.ids_);
 }
 
 } // namespace rspd

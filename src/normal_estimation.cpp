@@ -34,13 +34,11 @@ estimateNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph
     const Eigen::Vector3d origin = points[i].cast<double> ();
     Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
     Eigen::Matrix3d sq = Eigen::Matrix3d::Zero ();
-    const std::uint32_t* nbrs = graph.neighbors (i);
-    for (int j = 0; j < k; ++j)
-    {
-      const Eigen::Vector3d d = points[nbrs[j]].cast<double> () - origin;
+    graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) {
+      const Eigen::Vector3d d = points[j].cast<double> () - origin;
       sum += d;
       sq += d * d.transpose ();
-    }
+    });
     const double m = static_cast<double> (k + 1); // the sample itself contributes d = 0
     const Eigen::Vector3d mean = sum / m;
     const Eigen::Matrix3d cov = sq / m - mean * mean.transpose ();

@@ -2,11 +2,13 @@
  * pcl_rspd: the split phase (Sec. 3.1, Algorithm 1).
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/octree_split.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <iterator>
 #include <numeric>
 
 namespace pcl
@@ -48,13 +50,32 @@ public:
       const Eigen::Vector3d mid = lo + Eigen::Vector3d::Constant (0.5 * size);
       std::array<std::size_t, 9> bounds;
       partition (begin, end, mid, bounds);
-      for (int c = 0; c < 8; ++c)
+      const auto child_lo = [&] (int c) {
+        return Eigen::Vector3d (c & 1 ? mid.x () : lo.x (), c & 2 ? mid.y () : lo.y (), c & 4 ? mid.z () : lo.z ());
+      };
+      if (end - begin >= kTaskSamples)
       {
-        const Eigen::Vector3d child_lo (c & 1 ? mid.x () : lo.x (), c & 2 ? mid.y () : lo.y (),
-                                        c & 4 ? mid.z () : lo.z ());
-        if (detect (bounds[c], bounds[c + 1], child_lo, 0.5 * size, depth + 1, out))
-          has_planar_patch = true;
+        // Large cells: the children's subtrees are independent (disjoint ranges of order_), so they
+        // run as tasks, each into its own list; joining the lists in child order gives exactly the
+        // serial result whatever the thread count.
+        std::array<std::vector<PlanarPatch>, 8> child_out;
+        std::array<char, 8> child_planar{};
+        for (int c = 0; c < 8; ++c)
+        {
+#pragma omp task default(shared) firstprivate(c)
+          child_planar[c] = detect (bounds[c], bounds[c + 1], child_lo (c), 0.5 * size, depth + 1, child_out[c]);
+        }
+#pragma omp taskwait
+        for (int c = 0; c < 8; ++c)
+        {
+          has_planar_patch = has_planar_patch || child_planar[c];
+          std::move (child_out[c].begin (), child_out[c].end (), std::back_inserter (out));
+        }
       }
+      else
+        for (int c = 0; c < 8; ++c)
+          if (detect (bounds[c], bounds[c + 1], child_lo (c), 0.5 * size, depth + 1, out))
+            has_planar_patch = true;
     }
     if (has_planar_patch)
       return true;
@@ -62,7 +83,7 @@ public:
     // No child became a patch: test the cell itself (every level, the root included).
     const std::vector<std::uint32_t> samples (order_.begin () + begin, order_.begin () + end);
     PlanarityResult r = robustPlanarityTest (points_, samples, params_);
-    ++cells_tested_;
+    cells_tested_.fetch_add (1, std::memory_order_relaxed);
     if (r.verdict != PlanarityVerdict::Planar)
       return false;
     PlanarPatch patch;
@@ -89,9 +110,13 @@ public:
     lo = 0.5 * (mn + mx) - Eigen::Vector3d::Constant (0.5 * size);
   }
 
-  std::size_t cells_tested_ = 0;
+  std::atomic<std::size_t> cells_tested_{0};
 
 private:
+  /** \brief Cells with at least this many samples split into tasks (a few hundred tasks for a
+    * million samples; smaller subtrees are not worth a task). */
+  static constexpr std::size_t kTaskSamples = 16384;
+
   bool
   allCoincide (std::size_t begin, std::size_t end) const
   {
@@ -139,6 +164,8 @@ splitPhase (const PointSet& points, const DetectorParameters& params, DetectorSt
   Eigen::Vector3d lo;
   double size;
   splitter.rootCell (lo, size);
+#pragma omp parallel num_threads(resolveThreads (params.num_threads))
+#pragma omp single
   splitter.detect (0, splitter.size (), lo, size, 0, patches);
   if (stats)
   {

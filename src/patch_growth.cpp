@@ -37,7 +37,6 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
   // patch grown in turn t carries stamp t + 1, so no set needs clearing between patches.
   std::vector<std::uint32_t> rejected_by (points.size (), 0);
   std::size_t added = 0;
-  const int k = graph.k ();
   std::uint32_t stamp = 0;
   for (const auto p : order)
   {
@@ -46,12 +45,9 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
     // The queue is the member list itself: members are popped in order and new ones appended.
     for (std::size_t head = 0; head < patch.members.size (); ++head)
     {
-      const std::uint32_t* nbrs = graph.neighbors (patch.members[head]);
-      for (int j = 0; j < k; ++j)
-      {
-        const std::uint32_t n = nbrs[j];
+      graph.forEachNeighbor (patch.members[head], [&] (std::uint32_t n) {
         if (labels[n] != kNoPatch || rejected_by[n] == stamp)
-          continue;
+          return;
         if (patch.isInlier (points.points[n], points.normals[n]))
         {
           labels[n] = static_cast<std::uint32_t> (p);
@@ -61,7 +57,7 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
         }
         else
           rejected_by[n] = stamp;
-      }
+      });
     }
   }
   return added;

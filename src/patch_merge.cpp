@@ -58,28 +58,24 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
   if (num_patches < 2)
     return 0;
   UnionFind sets (num_patches);
-  const int k = graph.k ();
   // Every directed edge is visited once, which covers "an edge in either direction" (M1).
   for (std::size_t i = 0; i < graph.size (); ++i)
   {
     const std::uint32_t a = labels[i];
     if (a == kNoPatch)
       continue;
-    const std::uint32_t* nbrs = graph.neighbors (i);
-    for (int j = 0; j < k; ++j)
-    {
-      const std::uint32_t n = nbrs[j];
+    graph.forEachNeighbor (i, [&] (std::uint32_t n) {
       const std::uint32_t b = labels[n];
       if (b == kNoPatch || b == a || sets.find (a) == sets.find (b))
-        continue;
+        return;
       const PlanarPatch& pa = patches[a];
       const PlanarPatch& pb = patches[b];
       if (!normalsCompatible (pa, pb))                                        // M2
-        continue;
+        return;
       if (pb.isInlier (points.points[i], points.normals[i]) ||                // M3
           pa.isInlier (points.points[n], points.normals[n]))
         sets.unite (a, b);
-    }
+    });
   }
 
   // Representative of each group: the largest patch, ties by lowest member index.

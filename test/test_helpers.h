@@ -22,7 +22,7 @@ namespace rspd_test
 inline pcl::rspd::NeighborGraph
 bruteForceGraph (const std::vector<Eigen::Vector3f>& pts, int k)
 {
-  pcl::rspd::NeighborGraph g (pts.size (), k);
+  pcl::rspd::NeighborTable g (pts.size (), k);
   std::vector<std::pair<float, std::uint32_t>> d (pts.size ());
   for (std::size_t i = 0; i < pts.size (); ++i)
   {
@@ -32,7 +32,7 @@ bruteForceGraph (const std::vector<Eigen::Vector3f>& pts, int k)
     for (int j = 0; j < k; ++j)
       g.row (i)[j] = d[j].second;
   }
-  return g;
+  return pcl::rspd::NeighborGraph::fromTable (g);
 }
 
 /** Append a grid-sampled rectangle to \a set: origin o, edge vectors a and b, nu x nv samples,

@@ -1,5 +1,6 @@
 /*
- * pcl_rspd: tests of the exact k-NN graph builder against brute force and pcl::KdTreeFLANN.
+ * pcl_rspd: tests of the exact k-NN search (dense table and compressed graph) against brute force
+ * and pcl::KdTreeFLANN.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <pcl_rspd/neighbor_graph.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 #include <utility>
 #include <vector>
@@ -21,6 +23,7 @@ namespace
 {
 using Points = std::vector<Eigen::Vector3f>;
 using pcl::rspd::NeighborGraph;
+using pcl::rspd::NeighborTable;
 
 float
 dist2 (const Points& p, std::size_t i, std::size_t j)
@@ -111,7 +114,7 @@ clustered (std::size_t n, unsigned seed)
 
 /** Rows hold distinct indices other than self, in increasing (distance, index) order. */
 void
-expectWellFormed (const Points& p, const NeighborGraph& g)
+expectWellFormed (const Points& p, const NeighborTable& g)
 {
   ASSERT_EQ (g.size (), p.size ());
   const int k = g.k ();
@@ -139,7 +142,7 @@ expectWellFormed (const Points& p, const NeighborGraph& g)
 /** Exact comparison with the contract: the first k of all j != i in (distance, index) order.
   * Exact equality holds because the builder's distances are the floats squaredNorm () gives. */
 void
-expectEqualsBruteForce (const Points& p, const NeighborGraph& g)
+expectEqualsBruteForce (const Points& p, const NeighborTable& g)
 {
   const int k = g.k ();
   std::vector<std::pair<float, std::uint32_t>> all;
@@ -166,7 +169,7 @@ tolerance (float d2)
 /** Comparison with KdTreeFLANN: same sorted distances; same index sets unless the k-th distance
   * is tied with the next one. */
 void
-expectMatchesFlann (const Points& p, const NeighborGraph& g)
+expectMatchesFlann (const Points& p, const NeighborTable& g)
 {
   const int k = g.k ();
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
@@ -213,18 +216,38 @@ expectMatchesFlann (const Points& p, const NeighborGraph& g)
   EXPECT_GT (checked_sets, p.size () * 9 / 10);
 }
 
-NeighborGraph
+/** The compressed graph holds each row of the table as a set, read back in increasing order. */
+void
+expectGraphHoldsTable (const NeighborTable& t, const NeighborGraph& g)
+{
+  ASSERT_EQ (g.size (), t.size ());
+  ASSERT_EQ (g.k (), t.k ());
+  std::vector<std::uint32_t> want (t.k ()), got (t.k ());
+  for (std::size_t i = 0; i < t.size (); ++i)
+  {
+    std::copy (t.neighbors (i), t.neighbors (i) + t.k (), want.begin ());
+    std::sort (want.begin (), want.end ());
+    g.neighbors (i, got.data ());
+    ASSERT_EQ (got, want) << "row " << i;
+  }
+}
+
+/** The dense table, after checking that the compressed graph of the same search holds it. */
+NeighborTable
 build (const Points& p, int k, int threads = 2)
 {
-  NeighborGraph g;
-  EXPECT_TRUE (pcl::rspd::buildKnnGraph (p, k, threads, g));
+  NeighborTable g;
+  EXPECT_TRUE (pcl::rspd::buildKnnTable (p, k, threads, g));
   EXPECT_EQ (g.k (), k);
   EXPECT_EQ (g.size (), p.size ());
+  NeighborGraph compressed;
+  EXPECT_TRUE (pcl::rspd::buildKnnGraph (p, k, threads, compressed));
+  expectGraphHoldsTable (g, compressed);
   return g;
 }
 
 bool
-sameGraph (const NeighborGraph& a, const NeighborGraph& b)
+sameGraph (const NeighborTable& a, const NeighborTable& b)
 {
   if (a.size () != b.size () || a.k () != b.k ())
     return false;
@@ -235,91 +258,91 @@ sameGraph (const NeighborGraph& a, const NeighborGraph& b)
 
 // --- tests --------------------------------------------------------------------------------
 
-TEST (NeighborGraph, RejectsInvalidArguments)
+TEST (NeighborTable, RejectsInvalidArguments)
 {
   const Points p = uniformCube (10, 1);
-  NeighborGraph g (3, 2);
-  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 0, 1, g));
+  NeighborTable g (3, 2);
+  EXPECT_FALSE (pcl::rspd::buildKnnTable (p, 0, 1, g));
   EXPECT_TRUE (g.empty ());
-  g = NeighborGraph (3, 2);
-  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, -3, 1, g));
+  g = NeighborTable (3, 2);
+  EXPECT_FALSE (pcl::rspd::buildKnnTable (p, -3, 1, g));
   EXPECT_TRUE (g.empty ());
-  g = NeighborGraph (3, 2);
-  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 10, 1, g)); // n == k
+  g = NeighborTable (3, 2);
+  EXPECT_FALSE (pcl::rspd::buildKnnTable (p, 10, 1, g)); // n == k
   EXPECT_TRUE (g.empty ());
-  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 11, 1, g)); // n < k
+  EXPECT_FALSE (pcl::rspd::buildKnnTable (p, 11, 1, g)); // n < k
   EXPECT_TRUE (g.empty ());
-  EXPECT_FALSE (pcl::rspd::buildKnnGraph (Points (), 1, 1, g));
+  EXPECT_FALSE (pcl::rspd::buildKnnTable (Points (), 1, 1, g));
   EXPECT_TRUE (g.empty ());
 }
 
-TEST (NeighborGraph, SmallestCloudHoldsEveryOtherPoint)
+TEST (NeighborTable, SmallestCloudHoldsEveryOtherPoint)
 {
   for (int k : {1, 2, 7, 50})
   {
     const Points p = uniformCube (k + 1, 2 + k);
-    const NeighborGraph g = build (p, k);
+    const NeighborTable g = build (p, k);
     expectWellFormed (p, g);
     expectEqualsBruteForce (p, g);
   }
 }
 
-TEST (NeighborGraph, RandomCloudMatchesFlann)
+TEST (NeighborTable, RandomCloudMatchesFlann)
 {
   const Points p = uniformCube (20000, 3);
   for (int k : {1, 10, 50})
   {
-    const NeighborGraph g = build (p, k);
+    const NeighborTable g = build (p, k);
     expectWellFormed (p, g);
     expectMatchesFlann (p, g);
   }
 }
 
-TEST (NeighborGraph, CubeFacesMatchFlann)
+TEST (NeighborTable, CubeFacesMatchFlann)
 {
   const Points p = cubeFaces (30000, 4);
-  const NeighborGraph g = build (p, 50);
+  const NeighborTable g = build (p, 50);
   expectWellFormed (p, g);
   expectMatchesFlann (p, g);
 
   const Points noisy = cubeFaces (20000, 5, 0.01f);
-  const NeighborGraph gn = build (noisy, 30);
+  const NeighborTable gn = build (noisy, 30);
   expectMatchesFlann (noisy, gn);
 }
 
-TEST (NeighborGraph, TwoPlanesMatchFlann)
+TEST (NeighborTable, TwoPlanesMatchFlann)
 {
   const Points p = twoPlanes (30000, 6);
-  const NeighborGraph g = build (p, 50);
+  const NeighborTable g = build (p, 50);
   expectWellFormed (p, g);
   expectMatchesFlann (p, g);
 }
 
-TEST (NeighborGraph, AnisotropicCloudMatchesFlann)
+TEST (NeighborTable, AnisotropicCloudMatchesFlann)
 {
   // A long, thin, flat slab: extents 100 : 1 : 0.01.
   const Points p = uniformCube (20000, 7, Eigen::Vector3f (100.f, 1.f, 0.01f));
-  const NeighborGraph g = build (p, 40);
+  const NeighborTable g = build (p, 40);
   expectWellFormed (p, g);
   expectMatchesFlann (p, g);
 }
 
-TEST (NeighborGraph, ClusteredCloudMatchesFlann)
+TEST (NeighborTable, ClusteredCloudMatchesFlann)
 {
   const Points p = clustered (30000, 8);
-  const NeighborGraph g = build (p, 50);
+  const NeighborTable g = build (p, 50);
   expectWellFormed (p, g);
   expectMatchesFlann (p, g);
 }
 
-TEST (NeighborGraph, SmallCloudsEqualBruteForceExactly)
+TEST (NeighborTable, SmallCloudsEqualBruteForceExactly)
 {
   expectEqualsBruteForce (uniformCube (1500, 9), build (uniformCube (1500, 9), 12));
   expectEqualsBruteForce (cubeFaces (1500, 10), build (cubeFaces (1500, 10), 50));
   expectEqualsBruteForce (clustered (1500, 11), build (clustered (1500, 11), 20));
 }
 
-TEST (NeighborGraph, LatticeTiesAreBrokenByIndex)
+TEST (NeighborTable, LatticeTiesAreBrokenByIndex)
 {
   // An integer lattice, shuffled: every distance is exact and massively tied, so the rows are fully
   // determined by the tie rule.
@@ -332,17 +355,17 @@ TEST (NeighborGraph, LatticeTiesAreBrokenByIndex)
   std::shuffle (p.begin (), p.end (), std::mt19937 (12));
   for (int k : {6, 18, 26, 50})
   {
-    const NeighborGraph g = build (p, k);
+    const NeighborTable g = build (p, k);
     expectWellFormed (p, g);
     expectEqualsBruteForce (p, g);
   }
 }
 
-TEST (NeighborGraph, IdenticalPointsAreNeighboursAtDistanceZero)
+TEST (NeighborTable, IdenticalPointsAreNeighboursAtDistanceZero)
 {
   const Points p (10000, Eigen::Vector3f (0.25f, -0.5f, 1.f));
   const int k = 50;
-  const NeighborGraph g = build (p, k);
+  const NeighborTable g = build (p, k);
   for (std::size_t i = 0; i < p.size (); ++i)
   {
     // All distances are 0, so the row is the k smallest indices other than i.
@@ -357,7 +380,7 @@ TEST (NeighborGraph, IdenticalPointsAreNeighboursAtDistanceZero)
   }
 }
 
-TEST (NeighborGraph, DuplicatedSamplesEqualBruteForce)
+TEST (NeighborTable, DuplicatedSamplesEqualBruteForce)
 {
   // Every sample three times (the copies far apart in index), plus a run of one repeated point.
   Points p = cubeFaces (700, 13);
@@ -367,13 +390,13 @@ TEST (NeighborGraph, DuplicatedSamplesEqualBruteForce)
   p.insert (p.end (), 80, p[5]);
   for (int k : {2, 3, 30})
   {
-    const NeighborGraph g = build (p, k);
+    const NeighborTable g = build (p, k);
     expectWellFormed (p, g);
     expectEqualsBruteForce (p, g);
   }
 }
 
-TEST (NeighborGraph, PointsOnALine)
+TEST (NeighborTable, PointsOnALine)
 {
   std::mt19937 rng (14);
   std::uniform_real_distribution<float> u (-1.f, 1.f);
@@ -384,12 +407,12 @@ TEST (NeighborGraph, PointsOnALine)
   // And an axis-aligned line with evenly spaced (tied) samples.
   for (int i = 0; i < 1000; ++i)
     p.emplace_back (0.f, 0.f, 0.001f * static_cast<float> (i) - 0.5f);
-  const NeighborGraph g = build (p, 25);
+  const NeighborTable g = build (p, 25);
   expectWellFormed (p, g);
   expectEqualsBruteForce (p, g);
 }
 
-TEST (NeighborGraph, FlatAndDegenerateExtents)
+TEST (NeighborTable, FlatAndDegenerateExtents)
 {
   // All points on the plane z = 0, and a cloud whose z extent is a few ulps.
   Points flat = uniformCube (4000, 15, Eigen::Vector3f (1.f, 1.f, 0.f));
@@ -400,7 +423,7 @@ TEST (NeighborGraph, FlatAndDegenerateExtents)
   expectEqualsBruteForce (thin, build (thin, 10));
 }
 
-TEST (NeighborGraph, FarOutliers)
+TEST (NeighborTable, FarOutliers)
 {
   // A dense blob with a few samples far away on every side: their neighbours are in the blob.
   Points p = uniformCube (3000, 17, Eigen::Vector3f (0.01f, 0.01f, 0.01f));
@@ -408,12 +431,12 @@ TEST (NeighborGraph, FarOutliers)
   p.emplace_back (-1000.f, 5.f, 0.f);
   p.emplace_back (0.f, 0.f, 500.f);
   p.emplace_back (1000.f, 0.001f, 0.f);
-  const NeighborGraph g = build (p, 8);
+  const NeighborTable g = build (p, 8);
   expectWellFormed (p, g);
   expectEqualsBruteForce (p, g);
 }
 
-TEST (NeighborGraph, MultiScaleClouds)
+TEST (NeighborTable, MultiScaleClouds)
 {
   // Samples whose spacing grows geometrically, around nested clusters of very different sizes:
   // the neighbours of most samples lie far outside the cells next to theirs.
@@ -429,13 +452,13 @@ TEST (NeighborGraph, MultiScaleClouds)
   std::shuffle (p.begin (), p.end (), rng);
   for (int k : {1, 5, 40})
   {
-    const NeighborGraph graph = build (p, k);
+    const NeighborTable graph = build (p, k);
     expectWellFormed (p, graph);
     expectEqualsBruteForce (p, graph);
   }
 }
 
-TEST (NeighborGraph, NeighboursBeyondTheFirstCells)
+TEST (NeighborTable, NeighboursBeyondTheFirstCells)
 {
   // A configuration built so that the true neighbours of q lie farther from q's cell than the
   // 5x5x5 cells around it, while the cells next to it already hold enough (but farther)
@@ -455,13 +478,13 @@ TEST (NeighborGraph, NeighboursBeyondTheFirstCells)
   p.emplace_back (1000.f, 1000.f, 1000.f);
   for (int k : {1, 3, 5})
   {
-    const NeighborGraph graph = build (p, k);
+    const NeighborTable graph = build (p, k);
     EXPECT_EQ (graph.neighbors (24)[0], 25u);
     expectEqualsBruteForce (p, graph);
   }
 }
 
-TEST (NeighborGraph, ManyDuplicatesAmongOtherPoints)
+TEST (NeighborTable, ManyDuplicatesAmongOtherPoints)
 {
   // 50,000 copies of one position inside a cloud: their rows follow the tie rule; the other rows
   // (some of which reach the copies) equal brute force.
@@ -472,7 +495,7 @@ TEST (NeighborGraph, ManyDuplicatesAmongOtherPoints)
   p.insert (p.end (), 50000, dup);
   // A copy with a small index, the original among the copies.
   std::swap (p[17], p[first_copy + 100]);
-  const NeighborGraph graph = build (p, k);
+  const NeighborTable graph = build (p, k);
 
   std::vector<std::uint32_t> copies;
   for (std::size_t i = 0; i < p.size () && copies.size () <= static_cast<std::size_t> (k); ++i)
@@ -504,7 +527,7 @@ TEST (NeighborGraph, ManyDuplicatesAmongOtherPoints)
   }
 }
 
-TEST (NeighborGraph, WildOutliers)
+TEST (NeighborTable, WildOutliers)
 {
   // Outliers 10^9 to 10^15 times farther than the sample spacing: the finest cells of the bounding
   // box hold the whole cloud.
@@ -530,7 +553,7 @@ TEST (NeighborGraph, WildOutliers)
   r.emplace_back (12.3f, 10.999f, 10.999f); // b
   for (int k : {1, 3})
   {
-    const NeighborGraph graph = build (r, k);
+    const NeighborTable graph = build (r, k);
     EXPECT_EQ (graph.neighbors (q_index)[0], q_index + 1);
     expectEqualsBruteForce (r, graph);
   }
@@ -545,27 +568,101 @@ TEST (NeighborGraph, WildOutliers)
   std::shuffle (q.begin (), q.end (), rng);
   for (int k : {3, 30})
   {
-    const NeighborGraph graph = build (q, k);
+    const NeighborTable graph = build (q, k);
     expectWellFormed (q, graph);
     expectEqualsBruteForce (q, graph);
   }
 }
 
-TEST (NeighborGraph, OverwritesAGraphOfTheSameShape)
+TEST (NeighborTable, OverwritesAGraphOfTheSameShape)
 {
   const Points a = cubeFaces (5000, 25), b = uniformCube (5000, 26);
-  NeighborGraph reused = build (a, 12);
-  ASSERT_TRUE (pcl::rspd::buildKnnGraph (b, 12, 2, reused));
+  NeighborTable reused = build (a, 12);
+  ASSERT_TRUE (pcl::rspd::buildKnnTable (b, 12, 2, reused));
   EXPECT_TRUE (sameGraph (reused, build (b, 12)));
 }
 
-TEST (NeighborGraph, IndependentOfThreadCount)
+TEST (NeighborTable, IndependentOfThreadCount)
 {
   const Points p = cubeFaces (200000, 18, 0.002f);
-  NeighborGraph g1, g2, g0;
-  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 1, g1));
-  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 2, g2));
-  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 0, g0));
+  NeighborTable g1, g2, g0;
+  ASSERT_TRUE (pcl::rspd::buildKnnTable (p, 20, 1, g1));
+  ASSERT_TRUE (pcl::rspd::buildKnnTable (p, 20, 2, g2));
+  ASSERT_TRUE (pcl::rspd::buildKnnTable (p, 20, 0, g0));
   EXPECT_TRUE (sameGraph (g1, g2));
   EXPECT_TRUE (sameGraph (g1, g0));
+}
+
+TEST (NeighborGraph, CompressedGraphRejectsInvalidArguments)
+{
+  const Points p = uniformCube (10, 1);
+  NeighborGraph g;
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 0, 1, g));
+  EXPECT_TRUE (g.empty ());
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (p, 10, 1, g)); // n == k
+  EXPECT_TRUE (g.empty ());
+  EXPECT_FALSE (pcl::rspd::buildKnnGraph (Points (), 1, 1, g));
+  EXPECT_TRUE (g.empty ());
+}
+
+TEST (NeighborGraph, CompressedGraphIndependentOfThreadCount)
+{
+  const Points p = cubeFaces (100000, 18, 0.002f);
+  NeighborGraph g1, g2;
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 1, g1));
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 20, 2, g2));
+  std::vector<std::uint32_t> a (20), b (20);
+  for (std::size_t i = 0; i < p.size (); ++i)
+  {
+    g1.neighbors (i, a.data ());
+    g2.neighbors (i, b.data ());
+    ASSERT_EQ (a, b) << "row " << i;
+  }
+}
+
+TEST (NeighborGraph, SpatialOrderCompressesTheGraph)
+{
+  // In input order the indices of a row are random; in spatial order they are nearby, which is
+  // what the varint deltas need: well under 2 bytes per neighbour instead of 4 plain.
+  Points p = cubeFaces (200000, 19, 0.002f);
+  std::shuffle (p.begin (), p.end (), std::mt19937 (3));
+  const std::vector<std::uint32_t> order = pcl::rspd::spatialOrder (p, 2);
+  ASSERT_EQ (order.size (), p.size ());
+  std::vector<char> seen (p.size (), 0);
+  for (const auto i : order)
+  {
+    ASSERT_LT (i, p.size ());
+    ASSERT_FALSE (seen[i]);
+    seen[i] = 1;
+  }
+  Points sorted (p.size ());
+  for (std::size_t s = 0; s < p.size (); ++s)
+    sorted[s] = p[order[s]];
+  const int k = 50;
+  NeighborGraph g;
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (sorted, k, 2, g));
+  const double bytes_per_neighbour = static_cast<double> (g.memoryBytes ()) / (static_cast<double> (p.size ()) * k);
+  std::printf ("compressed graph: %.2f bytes per neighbour (plain: 4)\n", bytes_per_neighbour);
+  EXPECT_LT (bytes_per_neighbour, 2.0);
+  // And it still holds the exact rows.
+  NeighborTable t;
+  ASSERT_TRUE (pcl::rspd::buildKnnTable (sorted, k, 2, t));
+  expectGraphHoldsTable (t, g);
+}
+
+TEST (NeighborGraph, FromTableRoundTrips)
+{
+  NeighborTable t (4, 3);
+  const std::uint32_t rows[4][3] = {{3, 1, 2}, {0, 2, 3}, {3, 0, 1}, {2, 1, 0}};
+  for (int i = 0; i < 4; ++i)
+    std::copy (rows[i], rows[i] + 3, t.row (i));
+  const NeighborGraph g = NeighborGraph::fromTable (t);
+  std::vector<std::uint32_t> got (3);
+  g.neighbors (0, got.data ());
+  EXPECT_EQ (got, (std::vector<std::uint32_t>{1, 2, 3}));
+  g.neighbors (3, got.data ());
+  EXPECT_EQ (got, (std::vector<std::uint32_t>{0, 1, 2}));
+  std::vector<std::uint32_t> visited;
+  g.forEachNeighbor (2, [&visited] (std::uint32_t j) { visited.push_back (j); });
+  EXPECT_EQ (visited, (std::vector<std::uint32_t>{0, 1, 3}));
 }

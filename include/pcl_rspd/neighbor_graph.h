@@ -1,5 +1,6 @@
 /*
- * pcl_rspd: the k-nearest-neighbour graph G of Sec. 3.3, stored as one flat array.
+ * pcl_rspd: the k-nearest-neighbour graph G of Sec. 3.3, delta-compressed, and the exact k-NN
+ * search that builds it.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #pragma once
@@ -8,25 +9,23 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace pcl
 {
 namespace rspd
 {
-/** \brief Directed k-NN graph: row i holds the k nearest samples of sample i, the sample itself
-  * excluded, ordered by increasing distance (ties by increasing index).
-  *
-  * One flat array of n*k indices rather than a vector per sample: a vector per point costs a heap
-  * block each and was most of the neighbour-graph time in the peers.
-  */
-class NeighborGraph
+/** \brief Dense k-NN table: row i holds the k nearest samples of sample i, the sample itself
+  * excluded, ordered by increasing distance (ties by increasing index). 4·k bytes per sample;
+  * the pipeline keeps the compressed NeighborGraph instead. */
+class NeighborTable
 {
 public:
-  NeighborGraph () = default;
+  NeighborTable () = default;
 
-  /** \brief Allocate a graph of \a n rows of \a k neighbours each (contents undefined). */
-  NeighborGraph (std::size_t n, int k) : k_ (k), n_ (n), data_ (n * static_cast<std::size_t> (k)) {}
+  /** \brief Allocate a table of \a n rows of \a k neighbours each (contents undefined). */
+  NeighborTable (std::size_t n, int k) : k_ (k), n_ (n), data_ (n * static_cast<std::size_t> (k)) {}
 
   /** \brief Neighbours per sample. */
   int
@@ -36,7 +35,11 @@ public:
   std::size_t
   size () const { return n_; }
 
-  /** \brief The k neighbours of sample \a i. */
+  /** \brief Whether the table holds no rows. */
+  bool
+  empty () const { return n_ == 0; }
+
+  /** \brief The k neighbours of sample \a i, nearest first. */
   const std::uint32_t*
   neighbors (std::size_t i) const { return data_.data () + i * static_cast<std::size_t> (k_); }
 
@@ -44,23 +47,139 @@ public:
   std::uint32_t*
   row (std::size_t i) { return data_.data () + i * static_cast<std::size_t> (k_); }
 
-  /** \brief Whether the graph holds no rows. */
-  bool
-  empty () const { return n_ == 0; }
-
 private:
   int k_ = 0;
   std::size_t n_ = 0;
   std::vector<std::uint32_t> data_;
 };
 
-/** \brief Exact k-NN graph of \a points by the library's own method (a uniform grid with ring
+/** \brief Directed k-NN graph: row i is the set of the k nearest samples of sample i (the sample
+  * itself excluded), read back in increasing index order.
+  *
+  * Why compressed: k = 50 plain 32-bit indices are 200 bytes per sample, 200 MB per million points,
+  * more than everything else the method keeps. With the samples in spatial (Morton) order, as
+  * RobustPlaneSegmentation stores them, a row sorted by index is a few runs of nearby indices, so
+  * each index is stored as a LEB128 varint of its difference to the previous one (the first one
+  * relative to i): about 1.2-1.5 bytes per neighbour instead of 4. No phase needs the neighbours in
+  * distance order (PCA normals, growth and merge treat a row as a set), so the order is not kept.
+  * Rows live in fixed-size pages filled by per-thread Appenders, so building never holds a dense
+  * table and threads never wait on each other except to take a new page.
+  */
+class NeighborGraph
+{
+public:
+  NeighborGraph () = default;
+
+  /** \brief A graph of \a n rows of \a k neighbours; every row must then be set once through an
+    * Appender before it is read. */
+  NeighborGraph (std::size_t n, int k);
+
+  NeighborGraph (NeighborGraph&&) noexcept = default;
+  NeighborGraph&
+  operator= (NeighborGraph&&) noexcept = default;
+
+  /** \brief Neighbours per sample. */
+  int
+  k () const { return k_; }
+
+  /** \brief Number of samples (rows). */
+  std::size_t
+  size () const { return n_; }
+
+  /** \brief Whether the graph holds no rows. */
+  bool
+  empty () const { return n_ == 0; }
+
+  /** \brief Bytes held by the graph (pages and row offsets). */
+  std::size_t
+  memoryBytes () const;
+
+  /** \brief Call \a visit (std::uint32_t j) for each of the k neighbours j of sample \a i, in
+    * increasing order of j. */
+  template <typename Visit> void
+  forEachNeighbor (std::size_t i, Visit&& visit) const
+  {
+    const std::uint64_t at = offsets_[i];
+    const std::uint8_t* p = pages_[at >> page_shift_].get () + (at & page_mask_);
+    const std::uint64_t z = readVarint (p);
+    // Zigzag: the first neighbour may lie before or after i.
+    const std::int64_t delta = static_cast<std::int64_t> (z >> 1) ^ -static_cast<std::int64_t> (z & 1);
+    std::uint32_t j = static_cast<std::uint32_t> (static_cast<std::int64_t> (i) + delta);
+    visit (j);
+    for (int t = 1; t < k_; ++t)
+    {
+      j += static_cast<std::uint32_t> (readVarint (p));
+      visit (j);
+    }
+  }
+
+  /** \brief Copy the k neighbours of sample \a i into \a out, in increasing order. */
+  void
+  neighbors (std::size_t i, std::uint32_t* out) const
+  {
+    forEachNeighbor (i, [&out] (std::uint32_t j) { *out++ = j; });
+  }
+
+  /** \brief Fills rows of a graph; one per thread (each takes its own pages). */
+  class Appender
+  {
+  public:
+    explicit Appender (NeighborGraph& graph);
+
+    /** \brief Set row \a i to the k indices at \a row (any order; the array is not modified). */
+    void
+    setRow (std::size_t i, const std::uint32_t* row);
+
+  private:
+    NeighborGraph& graph_;
+    std::vector<std::uint32_t> sorted_;
+    std::uint8_t* page_ = nullptr;
+    std::uint64_t page_index_ = 0;
+    std::size_t used_ = 0;
+  };
+
+  /** \brief The graph of a dense table (rows as sets). */
+  static NeighborGraph
+  fromTable (const NeighborTable& table);
+
+private:
+  static std::uint64_t
+  readVarint (const std::uint8_t*& p)
+  {
+    std::uint64_t b = *p++;
+    if (b < 0x80)
+      return b;
+    std::uint64_t v = b & 0x7f;
+    int shift = 7;
+    do
+    {
+      b = *p++;
+      v |= (b & 0x7f) << shift;
+      shift += 7;
+    } while (b >= 0x80);
+    return v;
+  }
+
+  /** \brief Take a fresh page (thread-safe); returns its index. */
+  std::uint64_t
+  newPage (std::uint8_t*& data);
+
+  int k_ = 0;
+  std::size_t n_ = 0;
+  int page_shift_ = 0;
+  std::uint64_t page_mask_ = 0;
+  std::size_t max_row_bytes_ = 0;
+  std::vector<std::uint64_t> offsets_;                 ///< row i: page << page_shift_ | offset
+  std::vector<std::unique_ptr<std::uint8_t[]>> pages_;
+};
+
+/** \brief Exact k-NN graph of \a points by the library's own method (a linear octree with ring
   * search; see neighbor_graph.cpp for why not a k-d tree).
   *
   * Row i gets the k samples nearest to sample i other than i itself (duplicates of i count as
-  * neighbours at distance 0), ordered by increasing squared distance, ties by increasing index; the
-  * same sets KdTreeFLANN returns, ties aside.
-  * \param[in] points finite positions
+  * neighbours at distance 0; ties at the k-th distance go to the lower index): the same sets
+  * KdTreeFLANN returns, ties aside. Never holds a dense table: rows are compressed as they are found.
+  * \param[in] points finite positions (spatially ordered positions compress best)
   * \param[in] k neighbours per sample; must be < points.size()
   * \param[in] num_threads OpenMP threads (0: OpenMP's default); the result does not depend on it
   * \param[out] graph the graph
@@ -68,6 +187,16 @@ private:
   */
 bool
 buildKnnGraph (const std::vector<Eigen::Vector3f>& points, int k, int num_threads, NeighborGraph& graph);
+
+/** \brief The same search as buildKnnGraph, into a dense table in (distance, index) order. */
+bool
+buildKnnTable (const std::vector<Eigen::Vector3f>& points, int k, int num_threads, NeighborTable& table);
+
+/** \brief A spatial order of \a points: the permutation that sorts them along the Morton curve of
+  * their bounding box (ties by index). Storing samples in this order makes NeighborGraph compact
+  * and every phase cache-friendly. */
+std::vector<std::uint32_t>
+spatialOrder (const std::vector<Eigen::Vector3f>& points, int num_threads);
 
 } // namespace rspd
 } // namespace pcl

@@ -306,7 +306,8 @@ public:
   const std::vector<Eigen::Vector3f>&
   getUsedNormals () const { return points_.normals; }
 
-  /** \brief Indices of the valid samples (finite, within the indices) of the last detection. */
+  /** \brief Indices of the valid samples (finite, within the indices) of the last detection, in
+    * the library's internal order (spatial, not ascending; getUsedNormals() follows it). */
   const std::vector<pcl::index_t>&
   getValidIndices () const { return points_.input_indices; }
 

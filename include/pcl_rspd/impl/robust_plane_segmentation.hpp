@@ -414,6 +414,21 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
     const PointT& p = (*input_)[points_.input_indices[s]];
     points_.points[s] = (Eigen::Vector3d (p.x, p.y, p.z) - points_.offset).cast<float> ();
   }
+  // Samples in spatial (Morton) order: the k-NN graph's rows then hold nearby indices and
+  // compress to a third (neighbor_graph.h), and every phase walks memory in spatial order. It also
+  // makes the internal order, hence every tie-break, independent of the order of the input.
+  {
+    const std::vector<std::uint32_t> order = pcl::rspd::spatialOrder (points_.points, params_.num_threads);
+    std::vector<Eigen::Vector3f> sorted (n);
+    std::vector<pcl::index_t> sorted_indices (n);
+    for (std::size_t s = 0; s < n; ++s)
+    {
+      sorted[s] = points_.points[order[s]];
+      sorted_indices[s] = points_.input_indices[order[s]];
+    }
+    points_.points.swap (sorted);
+    points_.input_indices.swap (sorted_indices);
+  }
   if (normals_)
   {
     points_.normals.resize (n);
@@ -461,32 +476,45 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     graph_ = pcl::rspd::NeighborGraph (n, k_);
     bool short_answer = false;
     const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
-#pragma omp parallel for schedule(dynamic, 256) num_threads(pcl::rspd::resolveThreads (params_.num_threads))
-    for (std::ptrdiff_t s = 0; s < count; ++s)
+#pragma omp parallel num_threads(pcl::rspd::resolveThreads (params_.num_threads))
     {
+      pcl::rspd::NeighborGraph::Appender appender (graph_);
       pcl::Indices nn;
       std::vector<float> d2;
-      search_->nearestKSearch ((*input_)[points_.input_indices[s]], k_ + 1, nn, d2);
       std::vector<std::pair<float, std::uint32_t>> found;
-      found.reserve (nn.size ());
-      for (std::size_t j = 0; j < nn.size (); ++j)
+      std::vector<std::uint32_t> row (static_cast<std::size_t> (k_));
+#pragma omp for schedule(dynamic, 256)
+      for (std::ptrdiff_t s = 0; s < count; ++s)
       {
-        if (nn[j] < 0 || static_cast<std::size_t> (nn[j]) >= to_internal.size ())
-          continue;
-        const std::uint32_t t = to_internal[nn[j]];
-        if (t != std::numeric_limits<std::uint32_t>::max () && t != static_cast<std::uint32_t> (s))
-          found.emplace_back (d2[j], t);
-      }
-      std::sort (found.begin (), found.end ()); // by distance, ties by index: deterministic
-      if (found.size () < static_cast<std::size_t> (k_))
-      {
+        search_->nearestKSearch ((*input_)[points_.input_indices[s]], k_ + 1, nn, d2);
+        found.clear ();
+        for (std::size_t j = 0; j < nn.size () && j < d2.size (); ++j)
+        {
+          if (nn[j] < 0 || static_cast<std::size_t> (nn[j]) >= to_internal.size ())
+            continue;
+          const std::uint32_t t = to_internal[nn[j]];
+          if (t != std::numeric_limits<std::uint32_t>::max () && t != static_cast<std::uint32_t> (s))
+            found.emplace_back (d2[j], t);
+        }
+        std::sort (found.begin (), found.end ()); // by distance, ties by index: deterministic
+        found.erase (std::unique (found.begin (), found.end (),
+                                  [] (const std::pair<float, std::uint32_t>& a, const std::pair<float, std::uint32_t>& b) {
+                                    return a.second == b.second;
+                                  }),
+                     found.end ());
+        if (found.size () < static_cast<std::size_t> (k_))
+        {
 #pragma omp atomic write
-        short_answer = true;
-        continue;
+          short_answer = true;
+          // Every row must be set before the graph is read: fill with what there is.
+          for (int j = 0; j < k_; ++j)
+            row[j] = found.empty () ? static_cast<std::uint32_t> (s == 0 ? 1 : 0) : found[j % found.size ()].second;
+        }
+        else
+          for (int j = 0; j < k_; ++j)
+            row[j] = found[j].second;
+        appender.setRow (static_cast<std::size_t> (s), row.data ());
       }
-      std::uint32_t* row = graph_.row (s);
-      for (int j = 0; j < k_; ++j)
-        row[j] = found[j].second;
     }
     if (short_answer)
     {
@@ -531,6 +559,8 @@ RobustPlaneSegmentation<PointT, NormalT>::buildPlanes (const std::vector<pcl::rs
       plane.indices.indices.push_back (i);
       labels_[i] = static_cast<std::uint32_t> (p + 1);
     }
+    // Internal order is spatial; callers get their own indices ascending.
+    std::sort (plane.indices.indices.begin (), plane.indices.indices.end ());
     plane.center = patch.center + points_.offset;
     plane.normal = patch.normal;
     if ((origin - plane.center).dot (plane.normal) < 0.0)
