@@ -1133,16 +1133,25 @@ void
 NeighborGraph::Appender::setRow (std::size_t i, const std::uint32_t* row)
 {
   const int k = graph_.k_;
-  // Insertion sort: rows are short (k ~ 50), and for them it beats std::sort's partitioning.
+  // Sort by rank: each entry goes to the count of entries below it. k^2 comparisons, but without
+  // a branch, and the compiler vectorizes them: for k = 50 about twice as fast as an insertion sort
+  // and four times std::sort (this sort was a third of the graph's build time). Entries must be
+  // distinct for ranks to be; a repeated entry leaves a slot unset, and that row is sorted plainly.
+  constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max (); // never an index
   std::uint32_t* v = sorted_.data ();
-  v[0] = row[0];
-  for (int t = 1; t < k; ++t)
+  std::fill (v, v + k, kUnset);
+  for (int t = 0; t < k; ++t)
   {
     const std::uint32_t x = row[t];
-    int j = t;
-    for (; j > 0 && v[j - 1] > x; --j)
-      v[j] = v[j - 1];
-    v[j] = x;
+    int rank = 0;
+    for (int j = 0; j < k; ++j)
+      rank += static_cast<int> (row[j] < x);
+    v[rank] = x;
+  }
+  if (std::find (v, v + k, kUnset) != v + k)
+  {
+    std::copy (row, row + k, v);
+    std::sort (v, v + k);
   }
   if (page_ == nullptr || used_ + graph_.max_row_bytes_ > (std::size_t (1) << graph_.page_shift_))
   {
