@@ -23,8 +23,10 @@ labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches)
 
 std::size_t
 growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
-             std::vector<std::uint32_t>& labels)
+             std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags)
 {
+  if (flags && flags->size () != points.size ())
+    flags->assign (points.size (), 0);
   std::vector<std::size_t> order (patches.size ());
   std::iota (order.begin (), order.end (), 0);
   std::sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) {
@@ -45,9 +47,18 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
     // The queue is the member list itself: members are popped in order and new ones appended.
     for (std::size_t head = 0; head < patch.members.size (); ++head)
     {
-      graph.forEachNeighbor (patch.members[head], [&] (std::uint32_t n) {
-        if (labels[n] != kNoPatch || rejected_by[n] == stamp)
+      const std::uint32_t m = patch.members[head];
+      if (flags && ((*flags)[m] & kSaturated))
+        continue;
+      bool open = false; // a neighbour is still in no patch
+      graph.forEachNeighbor (m, [&] (std::uint32_t n) {
+        if (labels[n] != kNoPatch)
           return;
+        if (rejected_by[n] == stamp)
+        {
+          open = true;
+          return;
+        }
         if (patch.isInlier (points.points[n], points.normals[n]))
         {
           labels[n] = static_cast<std::uint32_t> (p);
@@ -56,8 +67,13 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
           ++added;
         }
         else
+        {
           rejected_by[n] = stamp;
+          open = true;
+        }
       });
+      if (flags && !open)
+        (*flags)[m] |= kSaturated;
     }
   }
   return added;

@@ -52,8 +52,10 @@ normalsCompatible (const PlanarPatch& a, const PlanarPatch& b)
 
 std::size_t
 mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
-              std::vector<std::uint32_t>& labels)
+              std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags)
 {
+  if (flags && flags->size () != points.size ())
+    flags->assign (points.size (), 0);
   const std::size_t num_patches = patches.size ();
   if (num_patches < 2)
     return 0;
@@ -62,10 +64,12 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
   for (std::size_t i = 0; i < graph.size (); ++i)
   {
     const std::uint32_t a = labels[i];
-    if (a == kNoPatch)
+    if (a == kNoPatch || (flags && ((*flags)[i] & kInterior)))
       continue;
+    bool interior = true;
     graph.forEachNeighbor (i, [&] (std::uint32_t n) {
       const std::uint32_t b = labels[n];
+      interior = interior && b == a;
       if (b == kNoPatch || b == a || sets.find (a) == sets.find (b))
         return;
       const PlanarPatch& pa = patches[a];
@@ -76,6 +80,8 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
           pa.isInlier (points.points[n], points.normals[n]))
         sets.unite (a, b);
     });
+    if (flags && interior)
+      (*flags)[i] |= kInterior | kSaturated;
   }
 
   // Representative of each group: the largest patch, ties by lowest member index.

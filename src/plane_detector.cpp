@@ -42,7 +42,8 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
 /** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
 void
 growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
-                      std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, DetectorStatistics& st)
+                      std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels,
+                      std::vector<std::uint8_t>& flags, DetectorStatistics& st)
 {
   for (;;)
   {
@@ -54,8 +55,8 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
       return;
     }
     ++st.iterations;
-    growPatches (points, graph, patches, labels);
-    st.merges += mergePatches (points, graph, patches, labels);
+    growPatches (points, graph, patches, labels, &flags);
+    st.merges += mergePatches (points, graph, patches, labels, &flags);
     const std::size_t updated = reestimateGrownPatches (points, params, patches);
     st.reestimations += updated;
     if (updated == 0)
@@ -85,7 +86,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   st.split_seconds = std::chrono::duration<double> (t1 - t0).count ();
 
   // Grow and merge until no patch needs an update (Sec. 3.3-3.5).
-  growMergeUntilStable (points, graph, params, patches, labels, st);
+  std::vector<std::uint8_t> flags (points.size (), 0); // see SampleFlag
+  growMergeUntilStable (points, graph, params, patches, labels, flags, st);
 
   if (params.small_cell_size > 0 && params.small_cell_size < params.min_patch_size && !patches.empty ())
   {
@@ -112,7 +114,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     }
     if (st.small_seeds > 0)
     {
-      growMergeUntilStable (points, graph, params, patches, labels, st);
+      growMergeUntilStable (points, graph, params, patches, labels, flags, st);
       patches.erase (std::remove_if (patches.begin (), patches.end (),
                                      [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
                      patches.end ());

@@ -23,6 +23,19 @@ constexpr std::uint32_t kNoPatch = std::numeric_limits<std::uint32_t>::max ();
 std::vector<std::uint32_t>
 labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches);
 
+/** \brief Per-sample flags that let later grow-merge iterations skip a sample's graph row.
+  *
+  * During grow-merge a labelled sample never loses its label and merging relabels whole patches,
+  * so both flags, once true, stay true: a saturated sample (every neighbour is in some patch) can
+  * add nothing to its patch by growth, and an interior sample (every neighbour is in its own patch)
+  * carries no merge edge. Skipping their rows changes no result; it takes most of the k-NN graph out
+  * of every iteration after the first. */
+enum SampleFlag : std::uint8_t
+{
+  kSaturated = 1,
+  kInterior = 2
+};
+
 /** \brief Grow every patch breadth-first over the k-NN graph (Algorithm 2).
   *
   * Patches grow one after the other by increasing MND (ties: lowest member index), so the least
@@ -33,11 +46,12 @@ labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches);
   * \param[in] graph directed k-NN graph (out-neighbours are visited)
   * \param[in,out] patches members are appended (first_index kept up to date)
   * \param[in,out] labels per-sample patch label, updated
+  * \param[in,out] flags SampleFlag bits per sample, kept across calls (null: none kept)
   * \return samples added
   */
 std::size_t
 growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
-             std::vector<std::uint32_t>& labels);
+             std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags = nullptr);
 
 } // namespace rspd
 } // namespace pcl

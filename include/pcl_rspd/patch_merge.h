@@ -49,11 +49,12 @@ normalsCompatible (const PlanarPatch& a, const PlanarPatch& b);
   * \param[in] graph k-NN graph
   * \param[in,out] patches merged in place (absorbed patches are removed, order otherwise kept)
   * \param[in,out] labels per-sample labels, rewritten to the new positions
+  * \param[in,out] flags SampleFlag bits per sample (see growPatches), kept across calls (null: none)
   * \return number of patches absorbed
   */
 std::size_t
 mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
-              std::vector<std::uint32_t>& labels);
+              std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags = nullptr);
 
 } // namespace rspd
 } // namespace pcl
