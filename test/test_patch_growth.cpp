@@ -5,6 +5,7 @@
 #include "test_helpers.h"
 
 #include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/patch_merge.h>
 #include <pcl_rspd/plane_detector.h>
 
 #include <gtest/gtest.h>
@@ -108,4 +109,45 @@ TEST (Reestimation, IterationCapIsHonouredAndReported)
   detectPlanes (s, g, p, out, &stats);
   EXPECT_EQ (stats.iterations, 1);
   EXPECT_TRUE (stats.hit_iteration_cap);
+}
+
+TEST (PatchGrowth, SkipFlagsChangeNothing)
+{
+  // Grow-merge rounds with the saturated/interior flags kept across calls must give exactly what
+  // the same rounds give with no flags: the flags only skip rows that cannot add or merge anything.
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.003f, 3);
+  rspd_test::addRectangle (s, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 40, 40, 0.003f, 4);
+  rspd_test::addRectangle (s, {1.02f, 0, 0.03f}, {1, 0, 0}, {0, 1, 0}, 20, 40, 0.003f, 5);
+  for (auto& n : s.normals)
+    n = Eigen::Vector3f (n.x () + 0.05f * std::sin (7.0f * n.y ()), n.y (), n.z ()).normalized ();
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
+  const auto seeds = [&s] {
+    std::vector<PlanarPatch> p;
+    for (std::uint32_t i = 0; i < s.size (); i += 211)
+      p.push_back (rspd_test::makePatch ({i}, s.points[i].cast<double> (), s.normals[i].cast<double> (), 0.006, 0.08));
+    return p;
+  };
+  std::vector<PlanarPatch> plain = seeds (), flagged = seeds ();
+  auto plain_labels = labelSamples (s.size (), plain), flagged_labels = labelSamples (s.size (), flagged);
+  std::vector<std::uint8_t> flags;
+  std::size_t skipped = 0;
+  for (int round = 0; round < 4; ++round)
+  {
+    const std::size_t a = growPatches (s, g, plain, plain_labels);
+    const std::size_t b = growPatches (s, g, flagged, flagged_labels, &flags);
+    EXPECT_EQ (a, b) << "round " << round;
+    EXPECT_EQ (mergePatches (s, g, plain, plain_labels), mergePatches (s, g, flagged, flagged_labels, &flags));
+    ASSERT_EQ (plain_labels, flagged_labels) << "round " << round;
+    ASSERT_EQ (plain.size (), flagged.size ());
+    for (std::size_t p = 0; p < plain.size (); ++p)
+      EXPECT_EQ (plain[p].members, flagged[p].members);
+    // Move the planes a little, as re-estimation does, so the next round has work to do.
+    for (auto* set : {&plain, &flagged})
+      for (auto& patch : *set)
+        patch.mdp *= 1.3;
+  }
+  for (const auto f : flags)
+    skipped += (f & kInterior) ? 1 : 0;
+  EXPECT_GT (skipped, s.size () / 2); // most samples end up interior: the skip is real
 }
