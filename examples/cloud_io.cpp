@@ -1054,6 +1054,46 @@ countFinite (const pcl::PointCloud<pcl::PointXYZ>& cloud)
 
 // -----------------------------------------------------------------------------------------------
 bool
+pcdDataMisreadAsHeader (const std::vector<std::uint8_t>& data)
+{
+  // What pcl::PCDReader::readHeader (PCL 1.13) does after the DATA line: read a line (up to '\n'),
+  // skip it if it is empty, take its first whitespace-delimited token, skip the line if that
+  // starts with '#', treat it as a header line if it starts with a keyword, and stop otherwise.
+  static const char* const kKeywords[] = {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
+                                          "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
+  const auto space = [] (std::uint8_t c) { return c == ' ' || (c >= '\t' && c <= '\r'); };
+  std::size_t pos = 0;
+  while (pos < data.size ())
+  {
+    std::size_t eol = pos;
+    while (eol < data.size () && data[eol] != '\n')
+      ++eol;
+    const std::size_t line_begin = pos;
+    pos = eol + 1;
+    if (eol == line_begin)
+      continue; // empty line
+    std::size_t t = line_begin;
+    while (t < eol && space (data[t]))
+      ++t;
+    std::size_t t_end = t;
+    while (t_end < eol && !space (data[t_end]))
+      ++t_end;
+    if (t == t_end)
+      return false; // whitespace only: no keyword, the header ends
+    const std::string token (data.begin () + static_cast<std::ptrdiff_t> (t),
+                             data.begin () + static_cast<std::ptrdiff_t> (t_end));
+    if (token[0] == '#')
+      continue; // a comment line: the next line is read too
+    for (const char* k : kKeywords)
+      if (token.compare (0, std::strlen (k), k) == 0)
+        return true;
+    return false;
+  }
+  return false;
+}
+
+// -----------------------------------------------------------------------------------------------
+bool
 writeLabeledCloud (const std::string& path, const LoadedCloud& in,
                    const std::vector<std::uint32_t>& labels, std::string& error)
 {
@@ -1073,52 +1113,77 @@ writeLabeledCloud (const std::string& path, const LoadedCloud& in,
 
   // Output fields: the input's in order (padding "_" dropped, since the writer re-pads anyway),
   // label and colour fields re-typed in place, missing ones appended. Packed without gaps.
+  // \a front moves the label (bit 0) and the colour (bit 1) to the front instead: see below.
   pcl::PCLPointCloud2 dst;
-  std::vector<Slot> slots;
-  std::vector<const pcl::PCLPointField*> sources;
-  bool has_label = false, has_colour = false;
-  std::uint32_t offset = 0;
-  const auto add = [&] (const std::string& name, std::uint8_t datatype, std::uint32_t count, Slot slot,
-                        const pcl::PCLPointField* source) {
-    pcl::PCLPointField f;
-    f.name = name;
-    f.datatype = datatype;
-    f.count = count;
-    f.offset = offset;
-    offset += static_cast<std::uint32_t> (count * datatypeSize (datatype));
-    dst.fields.push_back (f);
-    slots.push_back (slot);
-    sources.push_back (source);
-  };
-  for (const auto& f : src.fields)
-  {
-    if (f.name == "_")
-      continue;
-    if (f.name == "label")
+  const auto build = [&] (int front) {
+    dst = pcl::PCLPointCloud2 ();
+    std::vector<Slot> slots;
+    std::vector<const pcl::PCLPointField*> sources;
+    std::uint32_t offset = 0;
+    const auto add = [&] (const std::string& name, std::uint8_t datatype, std::uint32_t count, Slot slot,
+                          const pcl::PCLPointField* source) {
+      pcl::PCLPointField f;
+      f.name = name;
+      f.datatype = datatype;
+      f.count = count;
+      f.offset = offset;
+      offset += static_cast<std::uint32_t> (count * datatypeSize (datatype));
+      dst.fields.push_back (f);
+      slots.push_back (slot);
+      sources.push_back (source);
+    };
+    std::string colour_name = "rgb";
+    for (const auto& f : src.fields)
+      if (f.name == "rgba" || f.name == "rgb")
+      {
+        colour_name = f.name;
+        break;
+      }
+    const auto add_label = [&] { add ("label", pcl::PCLPointField::UINT32, 1, Slot::Label, nullptr); };
+    const auto add_colour = [&] {
+      if (colour_name == "rgba")
+        add ("rgba", pcl::PCLPointField::UINT32, 1, Slot::Rgba, nullptr);
+      else
+        add ("rgb", pcl::PCLPointField::FLOAT32, 1, Slot::Rgb, nullptr);
+    };
+    // A field moved to the front is not repeated at its place; any other label or colour field is
+    // re-typed in place, as without moving.
+    bool label_moved = (front & 1) != 0, colour_moved = (front & 2) != 0;
+    bool has_label = label_moved, has_colour = colour_moved;
+    if (label_moved)
+      add_label ();
+    if (colour_moved)
+      add_colour ();
+    for (const auto& f : src.fields)
     {
-      add ("label", pcl::PCLPointField::UINT32, 1, Slot::Label, nullptr);
-      has_label = true;
+      if (f.name == "_")
+        continue;
+      if (f.name == "label")
+      {
+        if (label_moved)
+          label_moved = false;
+        else
+          add_label ();
+        has_label = true;
+      }
+      else if (f.name == "rgb" || f.name == "rgba")
+      {
+        if (colour_moved && f.name == colour_name)
+          colour_moved = false;
+        else if (f.name == "rgba")
+          add ("rgba", pcl::PCLPointField::UINT32, 1, Slot::Rgba, nullptr);
+        else
+          add ("rgb", pcl::PCLPointField::FLOAT32, 1, Slot::Rgb, nullptr);
+        has_colour = true;
+      }
+      else
+        add (f.name, f.datatype, f.count, Slot::Copy, &f);
     }
-    else if (f.name == "rgb")
-    {
-      add ("rgb", pcl::PCLPointField::FLOAT32, 1, Slot::Rgb, nullptr);
-      has_colour = true;
-    }
-    else if (f.name == "rgba")
-    {
-      add ("rgba", pcl::PCLPointField::UINT32, 1, Slot::Rgba, nullptr);
-      has_colour = true;
-    }
-    else
-      add (f.name, f.datatype, f.count, Slot::Copy, &f);
-  }
-  if (!has_label)
-    add ("label", pcl::PCLPointField::UINT32, 1, Slot::Label, nullptr);
-  if (!has_colour)
-    add ("rgb", pcl::PCLPointField::FLOAT32, 1, Slot::Rgb, nullptr);
+    if (!has_label)
+      add_label ();
+    if (!has_colour)
+      add_colour ();
 
-  try
-  {
     dst.header = src.header;
     dst.width = src.width;
     dst.height = src.height;
@@ -1159,6 +1224,21 @@ writeLabeledCloud (const std::string& path, const LoadedCloud& in,
         }
       }
     }
+  };
+
+  try
+  {
+    // PCL's reader keeps parsing header lines after DATA as long as they look like header lines:
+    // binary data whose first bytes read as "DATA", "SIZE", "VIEWPOINT"... (after any comment or
+    // empty lines) makes the file unreadable (found by fuzz_cloud_reader; "DATA" even makes PCL
+    // throw). Such data is rare (the first point's bytes must spell a keyword), and then another
+    // field goes first: the label (a small integer) or the colour.
+    int front = 0;
+    build (front);
+    while (pcdDataMisreadAsHeader (dst.data) && front < 3)
+      build (++front);
+    if (pcdDataMisreadAsHeader (dst.data))
+      return error = path + ": cannot write the cloud: every field order of its first point reads as a PCD header line", false;
   }
   catch (const std::bad_alloc&)
   {

@@ -76,13 +76,20 @@ loadPcdBlob (const std::string& path, pcl::PCLPointCloud2& blob, std::string& er
 void
 makeLoadedCloud (const pcl::PointCloud<pcl::PointXYZ>& cloud, LoadedCloud& out);
 
+/** \brief Whether pcl::PCDReader would take the start of this binary DATA section for more header
+  * lines (it reads on after "DATA" while lines are empty, comments or start with a keyword). */
+bool
+pcdDataMisreadAsHeader (const std::vector<std::uint8_t>& data);
+
 /** \brief Write \a in with a per-point plane label and a colour, as a binary PCD.
   *
   * Every input point is written in the same order (organized stays organized), with the input's
   * fields (PCD padding fields "_" dropped) and sensor pose, plus a uint32 field "label" and a
   * float-packed field "rgb" as in pcl::PointXYZRGB (existing label / rgb / rgba fields get their
   * values replaced). Colours come from labelColour(). The file is written next to \a path under a
-  * temporary name and renamed, so \a path never holds a half-written file.
+  * temporary name and renamed, so \a path never holds a half-written file. In the rare case that
+  * the first point's bytes would be read by PCL as a header line (pcdDataMisreadAsHeader), the
+  * label (or else the colour) field is written first instead, so the file always reads back.
   *
   * \param[in] labels one label per point (0: no plane)
   * \return true on success; false with \a error set otherwise (nothing left behind)

@@ -714,6 +714,56 @@ TEST (CloudIO, WritesPlyInputAndInMemoryClouds)
   EXPECT_EQ (out.size (), 12u);
 }
 
+TEST (CloudIO, DetectsDataThatPclWouldReadAsHeader)
+{
+  const auto bytes = [] (const std::string& s) { return std::vector<std::uint8_t> (s.begin (), s.end ()); };
+  EXPECT_FALSE (rspd_tools::pcdDataMisreadAsHeader ({}));
+  EXPECT_FALSE (rspd_tools::pcdDataMisreadAsHeader ({0x00, 0x00, 0x80, 0x3f}));       // 1.0f
+  EXPECT_TRUE (rspd_tools::pcdDataMisreadAsHeader (bytes ("DATA")));
+  EXPECT_TRUE (rspd_tools::pcdDataMisreadAsHeader (bytes ("VIEWPOINT\x01\x02")));
+  EXPECT_TRUE (rspd_tools::pcdDataMisreadAsHeader (bytes (" \tSIZEx")));            // leading blanks skipped
+  EXPECT_TRUE (rspd_tools::pcdDataMisreadAsHeader (bytes ("\nWIDTH")));             // after an empty line
+  EXPECT_TRUE (rspd_tools::pcdDataMisreadAsHeader (bytes ("#\x01\x02\nPOINTS")));     // after a comment line
+  EXPECT_FALSE (rspd_tools::pcdDataMisreadAsHeader (bytes ("#\x01\x02\x03")));        // a comment, then the end
+  EXPECT_FALSE (rspd_tools::pcdDataMisreadAsHeader (bytes ("  \nDATA")));           // blank line ends the header
+  EXPECT_FALSE (rspd_tools::pcdDataMisreadAsHeader (bytes ("XDATA")));
+}
+
+TEST (CloudIO, LabelledCloudReadsBackWhenItsFirstPointSpellsAKeyword)
+{
+  // The first point's x has the bytes "DATA" (13.2664...), y and z spell nothing: written x first,
+  // PCL's reader would take the data for a header line (and throw). The writer must notice and
+  // put another field first, and the file must read back with every value intact.
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (const char* word : {"DATA", "VIEW"})
+  {
+    float x;
+    std::memcpy (&x, word, 4);
+    cloud.push_back (pcl::PointXYZ (x, 1.0f, 2.0f));
+  }
+  cloud.push_back (pcl::PointXYZ (3.0f, 4.0f, 5.0f));
+  for (std::size_t first = 0; first < 2; ++first)
+  {
+    pcl::PointCloud<pcl::PointXYZ> c = cloud;
+    std::swap (c[0], c[first]);
+    TempDir dir;
+    LoadedCloud in;
+    rspd_tools::makeLoadedCloud (c, in);
+    std::string error;
+    const std::vector<std::uint32_t> labels{7, 0, 1};
+    ASSERT_TRUE (rspd_tools::writeLabeledCloud (dir / "out.pcd", in, labels, error)) << error;
+    pcl::PointCloud<pcl::PointXYZRGBL> out;
+    ASSERT_EQ (pcl::io::loadPCDFile (dir / "out.pcd", out), 0);
+    ASSERT_EQ (out.size (), 3u);
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+      EXPECT_EQ (std::memcmp (&out[i].x, &c[i].x, 4), 0) << i;
+      EXPECT_EQ (out[i].y, c[i].y);
+      EXPECT_EQ (out[i].label, labels[i]);
+    }
+  }
+}
+
 TEST (CloudIO, RefusesUnwritableOutput)
 {
   TempDir dir;
