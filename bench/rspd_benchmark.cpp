@@ -87,8 +87,8 @@ const char* const kHelp =
     "  --tmpdir DIR      where the scenes and outputs go (default $TMPDIR or /tmp); removed at exit\n"
     "  --keep            keep the temporary directory\n"
     "\n"
-    "Stages (seconds, wall): read = loading the PCD; graph, normals, split, grow/merge = the class's\n"
-    "DetectorStatistics; other = the rest of segment() (valid samples, centring, plane outputs);\n"
+    "Stages (seconds, wall): read = loading the PCD; prepare, graph, normals, split, grow/merge,\n"
+    "outputs = the class's DetectorStatistics; other = the rest of segment() (result copies);\n"
     "write = per-point labels and the labelled PCD. total = read to written, in the child. peak =\n"
     "the child's maximum RSS (wait4). Progress goes to stderr, tables to stdout.\n"
     "\n"
@@ -331,7 +331,8 @@ secondsSince (const std::chrono::steady_clock::time_point& start)
 const std::vector<std::string>&
 stageNames (const std::string& method)
 {
-  static const std::vector<std::string> rspd{"read", "graph", "normals", "split", "grow/merge", "other", "write"};
+  static const std::vector<std::string> rspd{"read",       "prepare", "graph", "normals", "split",
+                                             "grow/merge", "outputs", "other", "write"};
   static const std::vector<std::string> rg{"read", "normals", "region growing", "write"};
   return method == "rspd" ? rspd : rg;
 }
@@ -445,10 +446,12 @@ runRspd (const std::string& input, const std::string& output, int threads)
     throw std::runtime_error (error);
   const double t_write = secondsSince (t2);
 
-  const double inner = stats.graph_seconds + stats.normals_seconds + stats.split_seconds + stats.grow_merge_seconds;
+  const double inner = stats.prepare_seconds + stats.graph_seconds + stats.normals_seconds + stats.split_seconds +
+                       stats.grow_merge_seconds + stats.output_seconds;
   rspd_tools::ByteWriter w;
-  w.putVector (std::vector<double>{t_read, stats.graph_seconds, stats.normals_seconds, stats.split_seconds,
-                                   stats.grow_merge_seconds, std::max (0.0, t_detect - inner), t_write});
+  w.putVector (std::vector<double>{t_read, stats.prepare_seconds, stats.graph_seconds, stats.normals_seconds,
+                                   stats.split_seconds, stats.grow_merge_seconds, stats.output_seconds,
+                                   std::max (0.0, t_detect - inner), t_write});
   w.put (secondsSince (t0));
   w.put<std::uint64_t> (planes.size ());
   w.put<std::uint64_t> (cloud.size ());
@@ -1028,11 +1031,18 @@ runThreadsCompare (const Options& o, const std::string& dir)
                  "1-min load average %s\n",
                  job.scene.c_str (), scene.points, o.noise < 0.0 ? "default" : format ("%g", o.noise).c_str (),
                  o.repeats, o.repeats == 1 ? "" : "s", loadAverage ().c_str ());
-    Table table ({"threads", "total", "read", "graph", "normals", "split", "grow/merge", "other", "write", "detection",
-                  "cpu s", "peak MB", "planes"},
-                 o.markdown);
+    std::vector<std::string> columns{"threads", "total"};
+    for (const auto& name : stageNames ("rspd"))
+      columns.push_back (name);
+    for (const char* c : {"detection", "cpu s", "peak MB", "planes"})
+      columns.push_back (c);
+    Table table (columns, o.markdown);
+    // Detection: every stage but reading and writing the files.
     const auto detection = [] (const Summary& s) {
-      return s.stages.size () == 7 ? s.stages[1] + s.stages[2] + s.stages[3] + s.stages[4] + s.stages[5] : 0.0;
+      double sum = 0.0;
+      for (std::size_t j = 1; j + 1 < s.stages.size (); ++j)
+        sum += s.stages[j];
+      return sum;
     };
     for (int t = 0; t < 2; ++t)
     {

@@ -294,8 +294,10 @@ run (const Options& o)
        " %zu re-estimations, %zu merges%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
        stats.iterations, stats.reestimations, stats.merges, stats.hit_iteration_cap ? ", iteration cap hit" : "");
-  log ("stages: neighbour graph %.3f s, normals %.3f s%s, split %.3f s, grow/merge %.3f s", stats.graph_seconds,
-       stats.normals_seconds, cloud.normals ? " (from the file)" : "", stats.split_seconds, stats.grow_merge_seconds);
+  log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
+       "outputs %.3f s",
+       stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,
+       cloud.normals ? " (from the file)" : "", stats.split_seconds, stats.grow_merge_seconds, stats.output_seconds);
 
   // Label i = i-th plane; the class returns planes largest first.
   std::vector<std::uint32_t> labels (n, 0);

@@ -2,6 +2,7 @@
  * pcl_rspd: the pipeline of Sec. 3 — split, then grow and merge until every patch is stable.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/octree_split.h>
 #include <pcl_rspd/patch_growth.h>
 #include <pcl_rspd/patch_merge.h>
@@ -25,8 +26,12 @@ std::size_t
 reestimateGrownPatches (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
 {
   std::size_t updated = 0;
-  for (auto& patch : patches)
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (patches.size ());
+  // Patches are independent: one per task (the big ones dominate, hence dynamic scheduling).
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : updated) num_threads(resolveThreads (params.num_threads))
+  for (std::ptrdiff_t p = 0; p < count; ++p)
   {
+    PlanarPatch& patch = patches[p];
     const double limit = (1.0 + params.update_growth_ratio) * static_cast<double> (patch.estimate_size);
     if (!(static_cast<double> (patch.members.size ()) > limit))
       continue;
@@ -72,10 +77,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   result.clear ();
   DetectorStatistics local;
   DetectorStatistics& st = stats ? *stats : local;
-  const double graph_seconds = st.graph_seconds, normals_seconds = st.normals_seconds;
+  // The caller's stages (before detection) are kept; the rest is this run's.
+  DetectorStatistics before = st;
   st = DetectorStatistics ();
-  st.graph_seconds = graph_seconds;
-  st.normals_seconds = normals_seconds;
+  st.prepare_seconds = before.prepare_seconds;
+  st.graph_seconds = before.graph_seconds;
+  st.graph_bytes = before.graph_bytes;
+  st.normals_seconds = before.normals_seconds;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now ();
 

@@ -75,10 +75,13 @@ struct DetectorStatistics
   std::size_t merges = 0;            ///< patches absorbed by merging
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept
   bool hit_iteration_cap = false;
+  double prepare_seconds = 0.0;      ///< valid samples, centring, spatial order (wall time)
   double graph_seconds = 0.0;        ///< building the k-NN graph (wall time)
+  std::size_t graph_bytes = 0;       ///< memory held by the compressed k-NN graph
   double normals_seconds = 0.0;      ///< estimating normals (0 when given)
   double split_seconds = 0.0;        ///< split phase
   double grow_merge_seconds = 0.0;   ///< grow-merge iterations
+  double output_seconds = 0.0;       ///< plane outputs: indices, labels, centroids, hulls, rectangles
 };
 
 /** \brief Run split (Sec. 3.1), then grow (3.3) and merge (3.4) until stable (3.5).

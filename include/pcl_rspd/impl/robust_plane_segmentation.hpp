@@ -32,6 +32,46 @@ namespace detail
 inline std::vector<Eigen::Vector2d>
 convexHull2D (std::vector<Eigen::Vector2d> pts)
 {
+  if (pts.size () > 64)
+  {
+    // Akl-Toussaint: the points extreme in 8 directions span a convex octagon inside the hull; what
+    // lies strictly inside it cannot be a hull vertex. On a dense plane that drops nearly every
+    // point before the O(m log m) sort (the sort was most of the output time on large planes).
+    const Eigen::Vector2d dirs[8] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    Eigen::Vector2d ext[8];
+    double best[8];
+    std::fill (best, best + 8, -HUGE_VAL);
+    for (const auto& p : pts)
+      for (int d = 0; d < 8; ++d)
+      {
+        const double v = p.dot (dirs[d]);
+        if (v > best[d])
+        {
+          best[d] = v;
+          ext[d] = p;
+        }
+      }
+    std::vector<Eigen::Vector2d> poly; // counter-clockwise: support points by increasing angle
+    for (const auto& e : ext)
+      if (poly.empty () || e != poly.back ())
+        poly.push_back (e);
+    while (poly.size () > 1 && poly.front () == poly.back ())
+      poly.pop_back ();
+    if (poly.size () >= 3)
+    {
+      const auto inside = [&poly] (const Eigen::Vector2d& p) {
+        for (std::size_t e = 0; e < poly.size (); ++e)
+        {
+          const Eigen::Vector2d& a = poly[e];
+          const Eigen::Vector2d& b = poly[(e + 1) % poly.size ()];
+          if (!((b.x () - a.x ()) * (p.y () - a.y ()) - (b.y () - a.y ()) * (p.x () - a.x ()) > 0.0))
+            return false;
+        }
+        return true;
+      };
+      pts.erase (std::remove_if (pts.begin (), pts.end (), inside), pts.end ());
+    }
+  }
   std::sort (pts.begin (), pts.end (), [] (const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x () < b.x () || (a.x () == b.x () && a.y () < b.y ());
   });
@@ -529,6 +569,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   }
   const auto t1 = std::chrono::steady_clock::now ();
   stats_.graph_seconds = std::chrono::duration<double> (t1 - t0).count ();
+  stats_.graph_bytes = graph_.memoryBytes ();
   if (!normals_)
   {
     PCL_DEBUG ("[pcl::%s::segment] no normals given: estimating them by PCA over the %d-neighbourhoods\n",
@@ -543,13 +584,16 @@ template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::buildPlanes (const std::vector<pcl::rspd::DetectedPatch>& patches)
 {
   planes_.clear ();
-  planes_.reserve (patches.size ());
+  planes_.resize (patches.size ());
   labels_.assign (input_->size (), 0);
   const Eigen::Vector3d origin = input_->sensor_origin_.template head<3> ().template cast<double> ();
-  for (std::size_t p = 0; p < patches.size (); ++p)
+  // Planes are independent (disjoint members, own output slot): one per task, largest first.
+  const std::ptrdiff_t num_patches = static_cast<std::ptrdiff_t> (patches.size ());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(pcl::rspd::resolveThreads (params_.num_threads))
+  for (std::ptrdiff_t p = 0; p < num_patches; ++p)
   {
     const pcl::rspd::DetectedPatch& patch = patches[p];
-    RobustPlane plane;
+    RobustPlane& plane = planes_[p];
     plane.indices.header = input_->header;
     plane.coefficients.header = input_->header;
     plane.indices.indices.reserve (patch.members.size ());
@@ -639,7 +683,6 @@ RobustPlaneSegmentation<PointT, NormalT>::buildPlanes (const std::vector<pcl::rs
     plane.rect_axes[1] = plane.normal.cross (plane.rect_axes[0]);
     plane.rect_size = size;
     plane.rect_center = plane.center + c2.x () * u0 + c2.y () * v0;
-    planes_.push_back (std::move (plane));
   }
 }
 
@@ -655,7 +698,10 @@ RobustPlaneSegmentation<PointT, NormalT>::compute ()
   stats_ = pcl::rspd::DetectorStatistics ();
   try
   {
-    if (!prepareSamples () || !prepareNeighbourhoods ())
+    const auto t0 = std::chrono::steady_clock::now ();
+    const bool prepared = prepareSamples ();
+    stats_.prepare_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t0).count ();
+    if (!prepared || !prepareNeighbourhoods ())
     {
       points_ = pcl::rspd::PointSet ();
       graph_ = pcl::rspd::NeighborGraph ();
@@ -663,7 +709,9 @@ RobustPlaneSegmentation<PointT, NormalT>::compute ()
     }
     std::vector<pcl::rspd::DetectedPatch> patches;
     pcl::rspd::detectPlanes (points_, graph_, params_, patches, &stats_);
+    const auto t1 = std::chrono::steady_clock::now ();
     buildPlanes (patches);
+    stats_.output_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
   }
   catch (const std::exception& e)
   {
