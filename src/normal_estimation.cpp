@@ -31,17 +31,28 @@ estimateNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph
   for (std::ptrdiff_t i = 0; i < n; ++i)
   {
     // Covariance about the neighbourhood's mean, relative to the sample to keep precision.
-    const Eigen::Vector3d origin = points[i].cast<double> ();
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
-    Eigen::Matrix3d sq = Eigen::Matrix3d::Zero ();
+    // The six distinct sums of the symmetric matrix as scalars: a full 3x3 update costs half again.
+    const double ox = points[i].x (), oy = points[i].y (), oz = points[i].z ();
+    double sx = 0.0, sy = 0.0, sz = 0.0, sxx = 0.0, sxy = 0.0, sxz = 0.0, syy = 0.0, syz = 0.0, szz = 0.0;
     graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) {
-      const Eigen::Vector3d d = points[j].cast<double> () - origin;
-      sum += d;
-      sq += d * d.transpose ();
+      const double dx = static_cast<double> (points[j].x ()) - ox;
+      const double dy = static_cast<double> (points[j].y ()) - oy;
+      const double dz = static_cast<double> (points[j].z ()) - oz;
+      sx += dx;
+      sy += dy;
+      sz += dz;
+      sxx += dx * dx;
+      sxy += dx * dy;
+      sxz += dx * dz;
+      syy += dy * dy;
+      syz += dy * dz;
+      szz += dz * dz;
     });
     const double m = static_cast<double> (k + 1); // the sample itself contributes d = 0
-    const Eigen::Vector3d mean = sum / m;
-    const Eigen::Matrix3d cov = sq / m - mean * mean.transpose ();
+    const Eigen::Vector3d mean (sx / m, sy / m, sz / m);
+    Eigen::Matrix3d cov;
+    cov << sxx / m, sxy / m, sxz / m, sxy / m, syy / m, syz / m, sxz / m, syz / m, szz / m;
+    cov -= mean * mean.transpose ();
     if (!(cov.cwiseAbs ().maxCoeff () > 0.0))
       continue; // all coincide
     double eigen_value;
