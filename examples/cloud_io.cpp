@@ -867,6 +867,12 @@ loadPcd (const std::string& path, std::uint64_t file_size, LoadedCloud& c, std::
   PcdHeader h;
   if (!parsePcdHeader (path, text, file_size, h, error, require_xyz) || !checkPcdBody (path, h, file_size, error))
     return false;
+  // PCL's reader parses on after DATA while lines look like header lines (see writeLabeledCloud):
+  // such a file would be read with a header other than the one just checked.
+  if (h.header_len < text.size () &&
+      pcdDataMisreadAsHeader (std::vector<std::uint8_t> (text.begin () + static_cast<std::ptrdiff_t> (h.header_len), text.end ())))
+    return error = path + ": the data begins with bytes that PCL's reader takes for a header line; it cannot "
+                          "read this file correctly", false;
   pcl::PCDReader reader;
   int version = 0;
   const int rc = reader.read (path, c.blob, c.origin, c.orientation, version, 0);
@@ -887,6 +893,10 @@ loadPcd (const std::string& path, std::uint64_t file_size, LoadedCloud& c, std::
             std::to_string (h.points);
     return false;
   }
+  if (require_xyz)
+    for (const char* axis : {"x", "y", "z"})
+      if (!findField (c.blob, axis))
+        return error = path + std::string (": PCL returned no '") + axis + "' field", false;
   c.format = "pcd " + h.data;
   return true;
 }

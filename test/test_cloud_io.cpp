@@ -729,6 +729,27 @@ TEST (CloudIO, DetectsDataThatPclWouldReadAsHeader)
   EXPECT_FALSE (rspd_tools::pcdDataMisreadAsHeader (bytes ("XDATA")));
 }
 
+TEST (CloudIO, RefusesPcdWhoseDataPclWouldReadAsHeader)
+{
+  // A valid-looking binary PCD whose first point spells "VIEWPOINT" plus seven words and then
+  // header lines: PCL's reader would take them for the header (and lose the x field).
+  TempDir dir;
+  std::string file = "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n"
+                     "WIDTH 16\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 16\nDATA binary\n";
+  std::string data = "VIEWPOINT 0 0 0 1 0 0 0\nFIELDS a b c\n";
+  data.resize (16 * 12, '\x01');
+  const std::string path = dir / "trap.pcd";
+  {
+    std::ofstream out (path, std::ios::binary);
+    out << file << data;
+  }
+  LoadedCloud in;
+  std::string error;
+  EXPECT_FALSE (rspd_tools::loadCloud (path, in, error));
+  EXPECT_NE (error.find ("header line"), std::string::npos) << error;
+  EXPECT_EQ (error.find ('\n'), std::string::npos);
+}
+
 TEST (CloudIO, LabelledCloudReadsBackWhenItsFirstPointSpellsAKeyword)
 {
   // The first point's x has the bytes "DATA" (13.2664...), y and z spell nothing: written x first,
