@@ -25,7 +25,7 @@ namespace
 {
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--threads N] [-v]";
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -39,6 +39,10 @@ const char* const kHelp =
     "  --png OUT.png    two views of the labelled cloud, from above and from below\n"
     "                   (--png-size WxH, default 1600x800)\n"
     "  -k N             neighbours per point for normals and the growth graph (default 50)\n"
+    "  --normal-scale S estimated normals from the k-neighbourhood ('fixed', the paper's), from the\n"
+    "                   finest scale that resolves a surface where noise swamps the k-neighbourhood\n"
+    "                   ('adaptive'), or that only when it swamps most of them ('auto', the\n"
+    "                   default); ignored when the input has normals\n"
     "  --threads N      OpenMP threads (default: OpenMP's default, OMP_NUM_THREADS is honoured)\n"
     "  -v               progress and per-stage timings on stderr\n"
     "\n"
@@ -56,6 +60,7 @@ struct Options
   int png_height = 800;
   int k = 50;
   int threads = 0;  // 0: leave OpenMP's default
+  pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
   bool verbose = false;
   bool help = false;
 };
@@ -155,6 +160,18 @@ parseArguments (int argc, char** argv)
       const std::string v = value ();
       if (!parseInt (v, o.k) || o.k < 3 || o.k > 1000)
         throw UsageError{"-k needs an integer from 3 to 1000 (got '" + v + "')"};
+    }
+    else if (arg == "--normal-scale")
+    {
+      const std::string v = value ();
+      if (v == "fixed")
+        o.normal_scale = pcl::rspd::NormalScale::Fixed;
+      else if (v == "adaptive")
+        o.normal_scale = pcl::rspd::NormalScale::Adaptive;
+      else if (v == "auto")
+        o.normal_scale = pcl::rspd::NormalScale::Automatic;
+      else
+        throw UsageError{"--normal-scale needs 'fixed', 'adaptive' or 'auto' (got '" + v + "')"};
     }
     else if (arg == "--threads" || arg == "-t")
     {
@@ -277,10 +294,16 @@ run (const Options& o)
   if (cloud.normals)
     seg.setInputNormals (cloud.normals);
   seg.setNumberOfNeighbours (o.k);
+  seg.setNormalScale (o.normal_scale);
   if (o.threads > 0)
     seg.setNumberOfThreads (static_cast<unsigned int> (o.threads));
   log ("detecting planes (k = %d, %s threads, %s normals)", o.k,
-       o.threads > 0 ? std::to_string (o.threads).c_str () : "default", cloud.normals ? "file" : "estimated");
+       o.threads > 0 ? std::to_string (o.threads).c_str () : "default",
+       cloud.normals ? "file"
+                     : (o.normal_scale == pcl::rspd::NormalScale::Fixed
+                            ? "estimated"
+                            : (o.normal_scale == pcl::rspd::NormalScale::Adaptive ? "estimated, adaptive scale,"
+                                                                                    : "estimated, automatic scale,")));
   std::vector<pcl::ModelCoefficients> coefficients;
   std::vector<pcl::PointIndices> indices;
   seg.segment (coefficients, indices);
@@ -298,6 +321,17 @@ run (const Options& o)
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,
        cloud.normals ? " (from the file)" : "", stats.split_seconds, stats.grow_merge_seconds, stats.output_seconds);
+  const pcl::rspd::NormalScaleStatistics& scales = seg.getNormalScaleStatistics ();
+  if (!scales.samples_per_scale.empty ())
+  {
+    std::string per_scale;
+    for (std::size_t s = 0; s < scales.samples_per_scale.size (); ++s)
+      per_scale += (s ? " " : "") + std::to_string (scales.samples_per_scale[s]);
+    log ("normal scales: %zu samples unresolved at k, %zu from a wider scale, %zu unresolved at every scale%s; "
+         "per scale (k-neighbourhood among every 2^s-th sample): %s; resolved when lambda0/lambda1 < %.3f",
+         scales.unresolved_at_k, scales.widened (), scales.unresolved,
+         scales.widened_scales ? "" : " (no wider scale searched)", per_scale.c_str (), scales.isotropic_ratio);
+  }
 
   // Label i = i-th plane; the class returns planes largest first.
   std::vector<std::uint32_t> labels (n, 0);

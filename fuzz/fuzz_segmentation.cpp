@@ -18,7 +18,8 @@
  *   6    scale 10^(b6 % 13 - 6)
  *   7    offset magnitude (b7 % 8: 0, 1, 1e2 .. 1e6) and signs per axis (bits 3-5)
  *   8    epsilon (3 + b8 % 40 when flag 8); if b8 & 128, grow-merge cap 1 + (b8 >> 5 & 3)
- *   9    sensor origin (b9 & 3); b9 & 4: setSmallPlaneSeeding (false)
+ *   9    sensor origin (b9 & 3); b9 & 4: setSmallPlaneSeeding (false); b9 & 8: setNormalScale (Adaptive,
+ *        or Automatic with b9 & 16)
  *   10   slopes of the tilted plane
  *   11   index count (b11 * n / 128), jitter amplitude (b11 & 7), normals size mismatch (b11 & 128
  *        together with out-of-range indices)
@@ -205,6 +206,17 @@ checkResult (const Cloud& cloud, const std::vector<bool>& valid, bool expected_o
     n_valid += valid[i];
   FUZZ_CHECK (seg.getValidIndices ().size () == n_valid);
   FUZZ_CHECK (seg.getUsedNormals ().size () == n_valid);
+  for (const auto& nn : seg.getUsedNormals ())
+    FUZZ_CHECK (std::abs (nn.norm () - 1.f) < 1e-4f);
+  // The adaptive normal scale accounts for every sample once.
+  const auto& scales = seg.getNormalScaleStatistics ().samples_per_scale;
+  if (!scales.empty ())
+  {
+    std::size_t total = 0;
+    for (const auto c : scales)
+      total += c;
+    FUZZ_CHECK (total == n_valid);
+  }
 }
 
 void
@@ -212,6 +224,8 @@ configure (Seg& seg, int k, std::uint8_t flags, std::uint8_t b8, std::uint8_t or
 {
   if (origin_code & 4)
     seg.setSmallPlaneSeeding (false);
+  if (origin_code & 8)
+    seg.setNormalScale ((origin_code & 16) ? pcl::rspd::NormalScale::Automatic : pcl::rspd::NormalScale::Adaptive);
   seg.setNumberOfThreads (1);
   seg.setNumberOfNeighbours (k);
   if (flags & 8)

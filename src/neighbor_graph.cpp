@@ -636,6 +636,21 @@ private:
   std::vector<std::uint32_t> scratch_;
 };
 
+/** \brief Rows handed to the caller's visitor as soon as they are final (one per thread). */
+class VisitSink : public RowSink
+{
+public:
+  VisitSink (const KnnRowVisitor& visit, int k) : visit_ (visit), scratch_ (static_cast<std::size_t> (k)) {}
+  std::uint32_t*
+  row (std::uint32_t) override { return scratch_.data (); }
+  void
+  done (std::uint32_t id, const std::uint32_t* row) override { visit_ (id, row); }
+
+private:
+  const KnnRowVisitor& visit_;
+  std::vector<std::uint32_t> scratch_;
+};
+
 /** \brief Per-thread search state. */
 class Searcher
 {
@@ -967,7 +982,8 @@ collectLeaves (const LinearOctree& tree, const Cell& cell, std::uint32_t leaf_si
 constexpr int kMaxLevels = 4;
 
 /** \brief Rows for the queries among the samples \a subset (all if null): their k nearest within
-  * \a subset, written to \a dense (in place) or, when it is null, compressed into \a graph.
+  * \a subset, written to \a dense (in place) or, when it is null, compressed into \a graph or,
+  * when that is null too, handed to \a visit.
   *
   * A finest-level leaf holding more than leaf_size distinct positions (a cloud whose extent is
   * over 10^6 times its sample spacing, such as one with a wild outlier) would cost its queries a
@@ -978,7 +994,7 @@ constexpr int kMaxLevels = 4;
 void
 solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::uint32_t>* subset,
             const std::vector<char>* is_query, int k, int threads, int level, const DenseRows* dense,
-            NeighborGraph* graph)
+            NeighborGraph* graph, const KnnRowVisitor* visit = nullptr)
 {
   LinearOctree tree;
   tree.build (points, subset, threads);
@@ -1010,8 +1026,10 @@ solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::u
     std::unique_ptr<RowSink> sink;
     if (dense)
       sink.reset (new DenseSink (*dense));
-    else
+    else if (graph)
       sink.reset (new AppendSink (*graph, k));
+    else
+      sink.reset (new VisitSink (*visit, k));
 #pragma omp for schedule(dynamic, 16)
     for (std::int64_t l = 0; l < static_cast<std::int64_t> (leaves.size ()); ++l)
       if (!overfull[l])
@@ -1041,7 +1059,8 @@ solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::u
         sub.push_back (tree.ids_[i]);
   }
 
-  // Into a graph: the overfull leaves' queries get a dense table of their own for this step.
+  // Into a graph or a visitor: the overfull leaves' queries get a dense table of their own for
+  // this step.
   std::vector<std::uint32_t> slot_of, local_data;
   DenseRows local;
   if (!dense)
@@ -1070,7 +1089,7 @@ solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::u
       if (overfull[l])
         searcher.processLeaf (leaves[l], is_query, true, sink);
   }
-  if (!dense)
+  if (!dense && graph)
   {
 #pragma omp parallel num_threads(threads)
     {
@@ -1079,6 +1098,12 @@ solveLevel (const std::vector<Eigen::Vector3f>& points, const std::vector<std::u
       for (std::int64_t q = 0; q < static_cast<std::int64_t> (queries.size ()); ++q)
         appender.setRow (queries[q], rows.row (queries[q]));
     }
+  }
+  else if (!dense)
+  {
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::int64_t q = 0; q < static_cast<std::int64_t> (queries.size ()); ++q)
+      (*visit) (queries[q], rows.row (queries[q]));
   }
 }
 
@@ -1224,6 +1249,17 @@ buildKnnTable (const std::vector<Eigen::Vector3f>& points, int k, int num_thread
   rows.k = k;
   rows.data = table.row (0);
   solveLevel (points, nullptr, nullptr, k, threads, 0, &rows, nullptr);
+  return true;
+}
+
+bool
+visitKnnRows (const std::vector<Eigen::Vector3f>& points, int k, int num_threads, const std::vector<char>& is_query,
+              const KnnRowVisitor& visit)
+{
+  if (!validShape (points.size (), k) || is_query.size () != points.size ())
+    return false;
+  const int threads = num_threads > 0 ? num_threads : omp_get_max_threads ();
+  solveLevel (points, nullptr, &is_query, k, threads, 0, nullptr, nullptr, &visit);
   return true;
 }
 

@@ -1,5 +1,6 @@
 /*
- * pcl_rspd: PCA normals over the growth graph's k-neighbourhoods.
+ * pcl_rspd: PCA normals over the growth graph's k-neighbourhoods, at the k-scale or at the finest
+ * scale that resolves a surface.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <pcl_rspd/normal_estimation.h>
@@ -8,12 +9,100 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <utility>
 
 namespace pcl
 {
 namespace rspd
 {
+namespace
+{
+/** Covariance of a sample and its neighbours about their mean (the sample counts once). Offsets are
+  * taken from the sample itself so that precision does not depend on where the scene lies. */
+template <typename ForEachNeighbour> Eigen::Matrix3d
+neighbourhoodCovariance (const Eigen::Vector3f& self, int k, const std::vector<Eigen::Vector3f>& points,
+                         ForEachNeighbour&& for_each)
+{
+  // Relative to the sample to keep precision; the six distinct sums of the symmetric matrix as
+  // scalars (a full 3x3 update per neighbour made this stage twice as slow).
+  const double ox = self.x (), oy = self.y (), oz = self.z ();
+  double sx = 0.0, sy = 0.0, sz = 0.0, sxx = 0.0, sxy = 0.0, sxz = 0.0, syy = 0.0, syz = 0.0, szz = 0.0;
+  for_each ([&] (std::uint32_t j) {
+    const double dx = static_cast<double> (points[j].x ()) - ox;
+    const double dy = static_cast<double> (points[j].y ()) - oy;
+    const double dz = static_cast<double> (points[j].z ()) - oz;
+    sx += dx;
+    sy += dy;
+    sz += dz;
+    sxx += dx * dx;
+    sxy += dx * dy;
+    sxz += dx * dz;
+    syy += dy * dy;
+    syz += dy * dz;
+    szz += dz * dz;
+  });
+  const double m = static_cast<double> (k + 1); // the sample itself contributes d = 0
+  const Eigen::Vector3d mean (sx / m, sy / m, sz / m);
+  Eigen::Matrix3d cov;
+  cov << sxx / m, sxy / m, sxz / m, sxy / m, syy / m, syz / m, sxz / m, syz / m, szz / m;
+  return cov - mean * mean.transpose ();
+}
+
+/** Unit eigenvector of the smallest eigenvalue (normal untouched if the samples coincide), and
+  * λ0/λ1, smallest over middle eigenvalue: 0 for a flat neighbourhood, near 1 for one that fills a
+  * ball. A neighbourhood without two independent directions (coincident or collinear samples) has no
+  * surface normal: ratio 1. */
+void
+fitNormal (const Eigen::Matrix3d& cov, Eigen::Vector3f& normal, double& ratio)
+{
+  ratio = 1.0;
+  if (!(cov.cwiseAbs ().maxCoeff () > 0.0))
+    return;
+  double l0;
+  Eigen::Vector3d eigen_vector;
+  pcl::eigen33 (cov, l0, eigen_vector);
+  const double norm = eigen_vector.norm ();
+  if (!(norm > 0.0 && std::isfinite (norm)))
+    return;
+  normal = (eigen_vector / norm).cast<float> ();
+  // λ1 and λ2 are the roots of x² - (c2 - λ0) x + (c1 - λ0 (c2 - λ0)), with c2 the trace and c1 the
+  // sum of the principal 2x2 minors: no second solution of the cubic.
+  const double c2 = cov.trace ();
+  const double c1 = cov (0, 0) * cov (1, 1) - cov (0, 1) * cov (0, 1) + cov (0, 0) * cov (2, 2) -
+                    cov (0, 2) * cov (0, 2) + cov (1, 1) * cov (2, 2) - cov (1, 2) * cov (1, 2);
+  l0 = std::max (0.0, l0);
+  const double sum = c2 - l0, product = c1 - l0 * sum;
+  const double l1 = 0.5 * (sum - std::sqrt (std::max (0.0, sum * sum - 4.0 * product)));
+  if (l1 > 0.0 && std::isfinite (l1))
+    ratio = std::min (1.0, l0 / l1);
+}
+
+/** splitmix64: a tiny generator whose stream is the same on every platform (the standard
+  * distributions are not), so the Monte Carlo quantile is too. */
+struct SplitMix64
+{
+  std::uint64_t state;
+  std::uint64_t
+  next ()
+  {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  /** Uniform in [-1, 1). */
+  double
+  symmetric ()
+  {
+    return static_cast<double> (next () >> 11) * (1.0 / 9007199254740992.0) * 2.0 - 1.0;
+  }
+};
+} // namespace
+
 int
 resolveThreads (int requested)
 {
@@ -30,38 +119,158 @@ estimateNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph
 #pragma omp parallel for schedule(static, 4096) num_threads(resolveThreads (num_threads))
   for (std::ptrdiff_t i = 0; i < n; ++i)
   {
-    // Covariance about the neighbourhood's mean, relative to the sample to keep precision.
-    // The six distinct sums of the symmetric matrix as scalars: a full 3x3 update costs half again.
-    const double ox = points[i].x (), oy = points[i].y (), oz = points[i].z ();
-    double sx = 0.0, sy = 0.0, sz = 0.0, sxx = 0.0, sxy = 0.0, sxz = 0.0, syy = 0.0, syz = 0.0, szz = 0.0;
-    graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) {
-      const double dx = static_cast<double> (points[j].x ()) - ox;
-      const double dy = static_cast<double> (points[j].y ()) - oy;
-      const double dz = static_cast<double> (points[j].z ()) - oz;
-      sx += dx;
-      sy += dy;
-      sz += dz;
-      sxx += dx * dx;
-      sxy += dx * dy;
-      sxz += dx * dz;
-      syy += dy * dy;
-      syz += dy * dz;
-      szz += dz * dz;
+    const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) {
+      graph.forEachNeighbor (static_cast<std::size_t> (i), add);
     });
-    const double m = static_cast<double> (k + 1); // the sample itself contributes d = 0
-    const Eigen::Vector3d mean (sx / m, sy / m, sz / m);
-    Eigen::Matrix3d cov;
-    cov << sxx / m, sxy / m, sxz / m, sxy / m, syy / m, syz / m, sxz / m, syz / m, szz / m;
-    cov -= mean * mean.transpose ();
-    if (!(cov.cwiseAbs ().maxCoeff () > 0.0))
-      continue; // all coincide
-    double eigen_value;
-    Eigen::Vector3d eigen_vector;
-    pcl::eigen33 (cov, eigen_value, eigen_vector);
-    const double norm = eigen_vector.norm ();
-    if (norm > 0.0 && std::isfinite (norm))
-      normals[i] = (eigen_vector / norm).cast<float> ();
+    double ratio;
+    fitNormal (cov, normals[i], ratio); // a degenerate neighbourhood keeps +Z
   }
+}
+
+double
+isotropicEigenRatioQuantile (int k, double quantile)
+{
+  static std::mutex mutex;
+  static std::map<std::pair<int, double>, double> cache;
+  if (k < 2 || !(quantile > 0.0 && quantile < 1.0))
+    return 0.0;
+  const std::pair<int, double> key (k, quantile);
+  {
+    std::lock_guard<std::mutex> lock (mutex);
+    const auto it = cache.find (key);
+    if (it != cache.end ())
+      return it->second;
+  }
+  // The null hypothesis "no surface at this scale": the k nearest samples of a sample inside a
+  // uniformly filled volume are uniform in a ball around it.
+  constexpr int kDraws = 4000;
+  SplitMix64 rng{0x5eed5eed5eed5eedULL};
+  std::vector<Eigen::Vector3f> ball (static_cast<std::size_t> (k) + 1);
+  std::vector<double> ratios (kDraws);
+  for (int d = 0; d < kDraws; ++d)
+  {
+    ball[0] = Eigen::Vector3f::Zero (); // the sample itself, at the centre
+    for (int j = 1; j <= k; ++j)
+    {
+      Eigen::Vector3d p;
+      do
+        p = Eigen::Vector3d (rng.symmetric (), rng.symmetric (), rng.symmetric ());
+      while (!(p.squaredNorm () < 1.0));
+      ball[j] = p.cast<float> ();
+    }
+    const Eigen::Matrix3d cov = neighbourhoodCovariance (ball[0], k, ball, [&] (auto&& add) {
+      for (int j = 1; j <= k; ++j)
+        add (static_cast<std::uint32_t> (j));
+    });
+    Eigen::Vector3f normal;
+    fitNormal (cov, normal, ratios[d]);
+  }
+  const std::size_t at = std::min<std::size_t> (kDraws - 1, static_cast<std::size_t> (quantile * kDraws));
+  std::nth_element (ratios.begin (), ratios.begin () + static_cast<std::ptrdiff_t> (at), ratios.end ());
+  const double value = ratios[at];
+  std::lock_guard<std::mutex> lock (mutex);
+  cache.emplace (key, value);
+  return value;
+}
+
+void
+estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph,
+                              int num_threads, std::vector<Eigen::Vector3f>& normals, NormalScaleStatistics* stats,
+                              bool only_when_most_unresolved)
+{
+  NormalScaleStatistics local;
+  NormalScaleStatistics& st = stats ? *stats : local;
+  st = NormalScaleStatistics ();
+  const std::size_t n = points.size ();
+  const int k = graph.k ();
+  const int threads = resolveThreads (num_threads);
+  st.isotropic_ratio = isotropicEigenRatioQuantile (k, 0.05);
+  const double bound = st.isotropic_ratio;
+  normals.assign (n, Eigen::Vector3f::UnitZ ());
+
+  // Scale 0: the graph's neighbourhoods, exactly as estimateNormals, plus the resolution test.
+  std::vector<char> resolved (n, 0);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t> (n); ++i)
+  {
+    const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) {
+      graph.forEachNeighbor (static_cast<std::size_t> (i), add);
+    });
+    double ratio;
+    fitNormal (cov, normals[i], ratio);
+    resolved[i] = ratio < bound ? 1 : 0;
+  }
+  std::vector<std::uint32_t> pending;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!resolved[i])
+      pending.push_back (static_cast<std::uint32_t> (i));
+  std::vector<char> ().swap (resolved);
+  st.unresolved_at_k = pending.size ();
+  st.samples_per_scale.push_back (n - pending.size ());
+  // The median sample resolved at the k-scale: the scale fits the scene, and the few samples it
+  // does not resolve are more likely outliers or clutter than a surface swamped by noise.
+  if (only_when_most_unresolved && 2 * pending.size () <= n)
+  {
+    st.unresolved = pending.size ();
+    st.samples_per_scale[0] = n;
+    return;
+  }
+  st.widened_scales = !pending.empty ();
+
+  // Wider scales, each for the samples the previous one left unresolved.
+  std::vector<Eigen::Vector3f> sub, sub_normals;
+  std::vector<char> is_query, sub_resolved;
+  std::vector<std::uint32_t> representative (pending.size ());
+  for (int s = 1; !pending.empty () && s < 32; ++s)
+  {
+    const std::size_t stride = std::size_t (1) << s;
+    const std::size_t m = (n + stride - 1) / stride; // samples 0, stride, 2 stride, ...
+    if (m <= static_cast<std::size_t> (k))
+      break; // fewer than k + 1 samples: no k-neighbourhood at this scale
+    sub.resize (m);
+    for (std::size_t j = 0; j < m; ++j)
+      sub[j] = points[j * stride];
+    // Representatives are every other sample of the scale: a normal over k samples of the scale
+    // changes over the neighbourhood's radius (about 4 of their spacings for k = 50), not from one
+    // sample to the next, and this halves the searches (measured: the same planes).
+    is_query.assign (m, 0);
+    for (std::size_t p = 0; p < pending.size (); ++p)
+    {
+      const Eigen::Vector3f& q = points[pending[p]];
+      std::size_t r = pending[p] / (2 * stride) * 2;
+      if (r + 2 < m && (sub[r + 2] - q).squaredNorm () < (sub[r] - q).squaredNorm ())
+        r += 2;
+      representative[p] = static_cast<std::uint32_t> (r);
+      is_query[r] = 1;
+    }
+    sub_normals.assign (m, Eigen::Vector3f::UnitZ ());
+    sub_resolved.assign (m, 0);
+    visitKnnRows (sub, k, threads, is_query, [&] (std::uint32_t q, const std::uint32_t* row) {
+      const Eigen::Matrix3d cov = neighbourhoodCovariance (sub[q], k, sub, [&] (auto&& add) {
+        for (int t = 0; t < k; ++t)
+          add (row[t]);
+      });
+      double ratio;
+      fitNormal (cov, sub_normals[q], ratio);
+      sub_resolved[q] = ratio < bound ? 1 : 0;
+    });
+    std::size_t kept = 0, took = 0;
+    for (std::size_t p = 0; p < pending.size (); ++p)
+    {
+      const std::uint32_t r = representative[p];
+      if (sub_resolved[r])
+      {
+        normals[pending[p]] = sub_normals[r];
+        ++took;
+      }
+      else
+        pending[kept++] = pending[p];
+    }
+    pending.resize (kept);
+    st.samples_per_scale.push_back (took);
+  }
+  st.unresolved = pending.size ();
+  st.samples_per_scale[0] += pending.size ();
 }
 
 } // namespace rspd

@@ -666,3 +666,63 @@ TEST (NeighborGraph, FromTableRoundTrips)
   g.forEachNeighbor (2, [&visited] (std::uint32_t j) { visited.push_back (j); });
   EXPECT_EQ (visited, (std::vector<std::uint32_t>{0, 1, 3}));
 }
+
+namespace
+{
+/** Rows of the flagged samples through visitKnnRows: each visited once, as the table has it. */
+void
+expectVisitedRowsMatchTable (const Points& p, int k, const std::vector<char>& flags, int threads)
+{
+  const NeighborTable table = build (p, k, threads);
+  std::vector<std::uint32_t> rows (p.size () * static_cast<std::size_t> (k), 0);
+  std::vector<int> visits (p.size (), 0);
+  ASSERT_TRUE (pcl::rspd::visitKnnRows (p, k, threads, flags, [&] (std::uint32_t q, const std::uint32_t* row) {
+    // Distinct queries per call, so each thread writes its own slots.
+    ++visits[q];
+    std::copy (row, row + k, rows.begin () + static_cast<std::ptrdiff_t> (q) * k);
+  }));
+  for (std::size_t i = 0; i < p.size (); ++i)
+  {
+    ASSERT_EQ (visits[i], flags[i] ? 1 : 0) << "sample " << i;
+    if (flags[i])
+      for (int t = 0; t < k; ++t)
+        ASSERT_EQ (rows[i * k + t], table.neighbors (i)[t]) << "row " << i << " position " << t;
+  }
+}
+} // namespace
+
+TEST (NeighborGraph, VisitedRowsAreTheTableRowsOfTheFlaggedSamples)
+{
+  // A few queries (the adaptive normal scale's use), half of them, and all of them.
+  const Points p = cubeFaces (20000, 31, 0.01f);
+  for (const std::size_t every : {97u, 2u, 1u})
+  {
+    std::vector<char> flags (p.size (), 0);
+    for (std::size_t i = 0; i < p.size (); i += every)
+      flags[i] = 1;
+    expectVisitedRowsMatchTable (p, 20, flags, 2);
+    expectVisitedRowsMatchTable (p, 20, flags, 1);
+  }
+  // Queries inside leaves that are solved as a problem of their own (wild outliers).
+  Points q = cubeFaces (3000, 32, 0.001f);
+  q.emplace_back (1e9f, 0.f, 0.f);
+  q.emplace_back (0.f, -3e12f, 1e12f);
+  std::vector<char> flags (q.size (), 0);
+  for (std::size_t i = 0; i < q.size (); i += 3)
+    flags[i] = 1;
+  flags.back () = 1;
+  expectVisitedRowsMatchTable (q, 10, flags, 2);
+}
+
+TEST (NeighborGraph, VisitRejectsInvalidArguments)
+{
+  const Points p = uniformCube (10, 1);
+  int visited = 0;
+  const auto count = [&visited] (std::uint32_t, const std::uint32_t*) { ++visited; };
+  EXPECT_FALSE (pcl::rspd::visitKnnRows (p, 0, 1, std::vector<char> (10, 1), count));
+  EXPECT_FALSE (pcl::rspd::visitKnnRows (p, 10, 1, std::vector<char> (10, 1), count));
+  EXPECT_FALSE (pcl::rspd::visitKnnRows (p, 3, 1, std::vector<char> (9, 1), count));
+  EXPECT_EQ (visited, 0);
+  EXPECT_TRUE (pcl::rspd::visitKnnRows (p, 3, 1, std::vector<char> (10, 0), count));
+  EXPECT_EQ (visited, 0);
+}

@@ -17,14 +17,15 @@ namespace
 {
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 
-/** Three faces of a unit box corner (x = 0, y = 0, z = 0 planes), σ = 2 mm, with truth 1..3. */
+/** Three faces of a unit box corner (x = 0, y = 0, z = 0 planes), σ = 2 mm unless given, with
+  * truth 1..3. */
 Cloud::Ptr
-boxCorner (int per_face = 3000, std::vector<int>* truth = nullptr, std::uint32_t seed = 1)
+boxCorner (int per_face = 3000, std::vector<int>* truth = nullptr, std::uint32_t seed = 1, float sigma = 0.002f)
 {
   auto cloud = std::make_shared<Cloud> ();
   std::mt19937 rng (seed);
   std::uniform_real_distribution<float> u (0.0f, 1.0f);
-  std::normal_distribution<float> g (0.0f, 0.002f);
+  std::normal_distribution<float> g (0.0f, sigma);
   for (int f = 0; f < 3; ++f)
     for (int i = 0; i < per_face; ++i)
     {
@@ -338,6 +339,58 @@ TEST (RobustPlaneSegmentation, DeterministicAcrossRunsAndThreads)
     EXPECT_EQ (i1[p].indices, i2[p].indices);
     EXPECT_EQ (c1[p].values, c2[p].values);
   }
+}
+
+TEST (RobustPlaneSegmentation, AdaptiveNormalScaleOnlyWhereTheNoiseSwampsTheNeighbourhood)
+{
+  // σ = 2 mm with 3000 samples per face: the k-neighbourhoods resolve the faces, so the option
+  // changes nothing. σ = 1 cm with 20,000 per face and k = 10 (neighbourhood radius ~1.3 cm, the
+  // regime of a million-sample unit cube with 1 % noise at k = 50): it widens most samples.
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> fixed, adaptive;
+  EXPECT_EQ (adaptive.getNormalScale (), pcl::rspd::NormalScale::Automatic); // the default
+  fixed.setNormalScale (pcl::rspd::NormalScale::Fixed);
+  adaptive.setNormalScale (pcl::rspd::NormalScale::Adaptive);
+  EXPECT_EQ (adaptive.getNormalScale (), pcl::rspd::NormalScale::Adaptive);
+  auto quiet = boxCorner (3000);
+  fixed.setInputCloud (quiet);
+  adaptive.setInputCloud (quiet);
+  EXPECT_GE (agreement (labelsOf (fixed), labelsOf (adaptive)), 0.99);
+  EXPECT_TRUE (fixed.getNormalScaleStatistics ().samples_per_scale.empty ());
+  EXPECT_LE (adaptive.getNormalScaleStatistics ().widened (), 30u); // the corner's samples
+  ASSERT_FALSE (adaptive.getNormalScaleStatistics ().samples_per_scale.empty ());
+  EXPECT_EQ (adaptive.getNormalScaleStatistics ().samples_per_scale[0] + adaptive.getNormalScaleStatistics ().widened (),
+             9000u);
+  // Automatic: the k-scale resolves most samples, so nothing is widened and the labels are Fixed's.
+  adaptive.setNormalScale (pcl::rspd::NormalScale::Automatic);
+  EXPECT_EQ (labelsOf (adaptive), labelsOf (fixed));
+  EXPECT_FALSE (adaptive.getNormalScaleStatistics ().widened_scales);
+  EXPECT_EQ (adaptive.getNormalScaleStatistics ().widened (), 0u);
+  adaptive.setNormalScale (pcl::rspd::NormalScale::Adaptive);
+
+  auto noisy = boxCorner (20000, nullptr, 2, 0.01f);
+  adaptive.setInputCloud (noisy);
+  adaptive.setNumberOfNeighbours (10);
+  adaptive.setNumberOfThreads (1);
+  const auto one_thread = labelsOf (adaptive);
+  const std::size_t widened = adaptive.getNormalScaleStatistics ().widened ();
+  EXPECT_GT (widened, 30000u);
+  adaptive.setNumberOfThreads (2);
+  adaptive.setNormalScale (pcl::rspd::NormalScale::Adaptive); // invalidates: computed again
+  EXPECT_EQ (labelsOf (adaptive), one_thread);
+  EXPECT_EQ (adaptive.getNormalScaleStatistics ().widened (), widened);
+  // Most samples are unresolved at the k-scale: Automatic widens as Adaptive does.
+  adaptive.setNormalScale (pcl::rspd::NormalScale::Automatic);
+  EXPECT_EQ (labelsOf (adaptive), one_thread);
+  EXPECT_TRUE (adaptive.getNormalScaleStatistics ().widened_scales);
+
+  // Given normals are used as they are.
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  for (std::size_t i = 0; i < noisy->size (); ++i)
+    normals->push_back (pcl::Normal (0.f, 0.f, 1.f));
+  adaptive.setInputNormals (normals);
+  labelsOf (adaptive);
+  EXPECT_TRUE (adaptive.hasResult ());
+  EXPECT_TRUE (adaptive.getNormalScaleStatistics ().samples_per_scale.empty ());
 }
 
 TEST (RobustPlaneSegmentation, ResultIsCachedUntilAnInputChanges)

@@ -124,3 +124,20 @@ TEST (SegmentCli, OutputIsByteIdenticalForOneAndTwoThreads)
   EXPECT_TRUE (one == rspd_test::fileText (dir.file ("flag.pcd")));
   EXPECT_EQ (rspd_test::fileText (dir.file ("one.csv")), rspd_test::fileText (dir.file ("two.csv")));
 }
+
+TEST (SegmentCli, NormalScaleOption)
+{
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (segment, "rspd_segment");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"cube", dir.file ("c"), "-n", "30000", "--noise", "0.03"}).status, 0);
+  ASSERT_EQ (runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("default.pcd")}).status, 0);
+  ASSERT_EQ (runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("fixed.pcd"), "--normal-scale", "fixed"}).status, 0);
+  EXPECT_TRUE (rspd_test::fileText (dir.file ("default.pcd")) == rspd_test::fileText (dir.file ("fixed.pcd")));
+  const auto r = runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("adaptive.pcd"), "--normal-scale=adaptive", "-v"});
+  ASSERT_EQ (r.status, 0) << r.err;
+  EXPECT_NE (r.err.find ("normal scales:"), std::string::npos) << r.err;
+  ASSERT_EQ (runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("auto.pcd"), "--normal-scale", "auto"}).status, 0);
+  EXPECT_EQ (runTool (segment, {dir.file ("c.pcd"), "--normal-scale", "wide"}).status, 2);
+  EXPECT_EQ (runTool (segment, {dir.file ("c.pcd"), "--normal-scale"}).status, 2);
+}

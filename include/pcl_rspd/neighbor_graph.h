@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -191,6 +192,24 @@ buildKnnGraph (const std::vector<Eigen::Vector3f>& points, int k, int num_thread
 /** \brief The same search as buildKnnGraph, into a dense table in (distance, index) order. */
 bool
 buildKnnTable (const std::vector<Eigen::Vector3f>& points, int k, int num_threads, NeighborTable& table);
+
+/** \brief Receives one row of a k-NN search: the \a query's k nearest samples (itself excluded), nearest
+  * first, in a buffer valid for the call only. Called from several threads at once, once per query. */
+using KnnRowVisitor = std::function<void (std::uint32_t query, const std::uint32_t* row)>;
+
+/** \brief The search of buildKnnGraph for the samples flagged in \a is_query only (the neighbours are
+  * searched among all samples), each row handed to \a visit as soon as it is final instead of being
+  * stored. For a few queries it costs those queries plus sorting the points, and holds no table.
+  * \param[in] points finite positions
+  * \param[in] k neighbours per query; must be < points.size()
+  * \param[in] num_threads OpenMP threads (0: OpenMP's default); the rows do not depend on it
+  * \param[in] is_query one flag per point (non-zero: find its row)
+  * \param[in] visit called once per flagged point, concurrently; must be thread-safe
+  * \return false (nothing visited) if k < 1, there are not more than k points, or the flags do not
+  * match the points */
+bool
+visitKnnRows (const std::vector<Eigen::Vector3f>& points, int k, int num_threads, const std::vector<char>& is_query,
+              const KnnRowVisitor& visit);
 
 /** \brief A spatial order of \a points: the permutation that sorts them along the Morton curve of
   * their bounding box (ties by index). Storing samples in this order makes NeighborGraph compact

@@ -1,5 +1,6 @@
 /*
- * pcl_rspd: PCA normals over the growth graph's k-neighbourhoods.
+ * pcl_rspd: PCA normals over the growth graph's k-neighbourhoods, at the k-scale or at the finest
+ * scale that resolves a surface.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #pragma once
@@ -8,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <vector>
 
 namespace pcl
@@ -28,6 +30,97 @@ namespace rspd
 void
 estimateNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
                  std::vector<Eigen::Vector3f>& normals);
+
+/** \brief Which neighbourhood a sample's normal comes from when the caller gives no normals. */
+enum class NormalScale
+{
+  /** \brief The sample's k-neighbourhood in the growth graph (the paper; estimateNormals). */
+  Fixed,
+  /** \brief Per sample, the finest scale whose neighbourhood resolves a surface
+    * (estimateAdaptiveScaleNormals): the k-neighbourhood wherever it resolves one. */
+  Adaptive,
+  /** \brief Adaptive when the k-scale fails for the scene as a whole, i.e. for most of its samples
+    * (the median sample's k-neighbourhood resolves no surface); Fixed otherwise. */
+  Automatic
+};
+
+/** \brief What the adaptive scale did, for logs and tests. */
+struct NormalScaleStatistics
+{
+  double isotropic_ratio = 0.0;     ///< the resolution test's bound on λ0/λ1 (for this k)
+  std::size_t unresolved_at_k = 0;  ///< samples whose k-neighbourhood resolves no surface
+  /** \brief [s]: samples whose normal comes from the k-neighbourhood among every 2^s-th sample; [0]:
+    * the k-scale, including the samples no scale resolved and, when no wider scale was searched,
+    * every sample. */
+  std::vector<std::size_t> samples_per_scale;
+  std::size_t unresolved = 0;       ///< samples left unresolved; they keep the k-scale normal
+  bool widened_scales = false;      ///< whether wider scales were searched at all
+
+  /** \brief Samples whose normal comes from a wider scale than the k-neighbourhood. */
+  std::size_t
+  widened () const
+  {
+    std::size_t w = 0;
+    for (std::size_t s = 1; s < samples_per_scale.size (); ++s)
+      w += samples_per_scale[s];
+    return w;
+  }
+};
+
+/** \brief Unit normals by PCA at the finest scale whose neighbourhood resolves a surface.
+  *
+  * Why: when the noise along the normal is about as large as the radius of a k-neighbourhood (a
+  * million samples on a unit cube with 1 % noise, k = 50), the k samples fill a ball rather than a
+  * slab, the smallest-variance direction is noise (it may lie in the plane), and T2, T3 and the growth,
+  * which all test per-sample normals, find nothing. A wider neighbourhood would resolve the plane, but a
+  * wider one everywhere blurs every edge, so each sample gets the finest scale that works for it.
+  *
+  * Scales: scale s is the k-neighbourhood among every 2^s-th sample of \a points, which must be in
+  * spatial (Morton) order, as RobustPlaneSegmentation stores them: that subsample is spread evenly, so
+  * its k neighbours span about 2^s times the area of the k-neighbourhood, while k stays k. Scale 0 is
+  * the graph's own neighbourhood (the normal estimateNormals gives, bit for bit).
+  *
+  * Resolution test: a neighbourhood resolves a surface when the ratio λ0/λ1 of its two smallest
+  * covariance eigenvalues is below isotropicEigenRatioQuantile (k, 0.05), the value that k + 1 samples
+  * filling a ball (no surface at that scale) stay under only 5 % of the time: the test rejects
+  * "volume, not surface" at the 5 % level. Nothing else is a constant, and every quantity is a ratio or
+  * a count, so the scale picked does not depend on units, position or orientation.
+  *
+  * Each sample starts at scale 0. While unresolved it moves to the next scale, where it reads the
+  * neighbourhood of its representative: of the two samples of every 2^(s+1)-th that bracket it in
+  * the spatial order, the nearer (every other sample of the scale: a normal over k of them changes
+  * over the neighbourhood's radius, not from one sample to the next, and this halves the searches).
+  * Only the representatives of still unresolved samples are searched (visitKnnRows), so a scene
+  * resolved at the k-scale pays one eigenvalue ratio per sample, and a scale is searched only for the
+  * samples that need it. A sample that no scale resolves (a stray outlier, a thin wire, a corner)
+  * keeps its scale-0 normal. The result does not depend on the thread count.
+  *
+  * Known cost of widening every unresolved sample (measured, README): a cloud's outliers or clutter
+  * can look like a surface at a wide scale (uniform outliers filling a thin box), so some of them get
+  * a surface normal and join a plane. NormalScale::Automatic (\a only_when_most_unresolved) widens only
+  * when the k-scale fails for most samples, which leaves every scene it resolves untouched.
+  * \param[in] points centred positions, in spatial order
+  * \param[in] graph their k-NN graph
+  * \param[in] num_threads OpenMP threads (0: default)
+  * \param[out] normals one unit vector per sample
+  * \param[out] stats what happened (may be null)
+  * \param[in] only_when_most_unresolved search wider scales only if more than half of the samples are
+  * unresolved at the k-scale (NormalScale::Automatic); otherwise the result is estimateNormals'
+  */
+void
+estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph,
+                              int num_threads, std::vector<Eigen::Vector3f>& normals,
+                              NormalScaleStatistics* stats = nullptr, bool only_when_most_unresolved = false);
+
+/** \brief The \a quantile of λ0/λ1 (smallest over middle covariance eigenvalue) for a sample at the
+  * centre of a ball and \a k others drawn uniformly in it: the k-neighbourhood of a volume that holds
+  * no surface. A deterministic Monte Carlo estimate (4000 draws, fixed seed; standard error about
+  * 0.003), computed once per (k, quantile) and cached. For k = 50: 0.58 at the 5 % quantile.
+  * \param[in] k neighbours (>= 2)
+  * \param[in] quantile in (0, 1)
+  */
+double
+isotropicEigenRatioQuantile (int k, double quantile);
 
 /** \brief OpenMP thread count for a request (0: OpenMP's default, i.e. OMP_NUM_THREADS). */
 int

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/plane_detector.h>
 
 #include <pcl/ModelCoefficients.h>
@@ -81,8 +82,13 @@ struct RobustPlane
   *    M2), grow-merge runs again, and planes still smaller than ε are dropped.
   *
   * Without setInputNormals, normals are estimated by PCA over the same k-neighbourhoods that form
-  * the growth graph. Without setSearchMethod, the graph comes from the library's own exact k-NN
-  * (pcl::rspd::buildKnnGraph); any pcl::search::Search can be plugged in instead.
+  * the growth graph. Where noise along the normal is as large as such a neighbourhood (a million
+  * samples on a unit cube with 1 % noise), those normals are noise and nothing is found;
+  * setNormalScale (Adaptive or Automatic) then takes each such sample's normal from the finest wider
+  * scale that resolves a surface, and leaves every other normal as it is (Automatic, the default, does
+  * that only when most samples are unresolved, so resolved scenes keep exactly the PCA normals). Without
+  * setSearchMethod, the graph comes from the library's own exact k-NN (pcl::rspd::buildKnnGraph);
+  * any pcl::search::Search can be plugged in instead.
   *
   * The setters of pcl::SACSegmentation (setModelType, setMethodType, setDistanceThreshold,
   * setMaxIterations, setProbability, setOptimizeCoefficients) are accepted so that a pipeline can
@@ -236,6 +242,24 @@ public:
   bool
   getSmallPlaneSeeding () const { return small_plane_seeding_; }
 
+  /** \brief Where estimated normals come from (used only without setInputNormals; default
+    * pcl::rspd::NormalScale::Automatic; Fixed is the paper's, the sample's k-neighbourhood). Where noise along the normal is
+    * about as large as a k-neighbourhood's radius (a million samples on a unit cube with 1 % noise),
+    * that neighbourhood fills a ball rather than a slab, its normal is noise and no plane is found.
+    * Adaptive: each sample whose k-neighbourhood resolves no surface takes its normal from the finest
+    * wider scale that does, the k-neighbourhood among every 2nd, 4th, 8th, ... sample of the spatial
+    * order (2, 4, 8, ... times the area, k unchanged); "resolves" tests the ratio of the two smallest
+    * covariance eigenvalues against what k + 1 samples filling a ball give (5 % level;
+    * pcl::rspd::estimateAdaptiveScaleNormals). Samples the k-scale resolves keep their normal, only the
+    * others pay for a wider search, and the growth graph stays the exact k-NN graph. Automatic: the
+    * same, but only when the k-scale fails for most samples; a scene the k-scale resolves keeps the
+    * Fixed normals exactly (outliers and clutter are not given a wide-scale normal). */
+  void
+  setNormalScale (pcl::rspd::NormalScale scale);
+  /** \brief Where estimated normals come from. */
+  pcl::rspd::NormalScale
+  getNormalScale () const { return normal_scale_; }
+
   /** \brief Safety cap on grow-merge iterations (default 100); reaching it is logged. */
   void
   setMaxGrowMergeIterations (int iterations);
@@ -319,6 +343,11 @@ public:
   const pcl::rspd::DetectorStatistics&
   getStatistics () const { return stats_; }
 
+  /** \brief Samples per normal scale in the last detection (empty unless the normals were estimated
+    * with NormalScale Adaptive or Automatic). */
+  const pcl::rspd::NormalScaleStatistics&
+  getNormalScaleStatistics () const { return normal_scale_stats_; }
+
   /** \brief Whether the last detection succeeded. */
   bool
   hasResult () const { return computed_ && ok_; }
@@ -354,6 +383,7 @@ protected:
   double min_patch_ratio_ = 0.001;
   std::size_t min_patch_size_ = 0;
   bool small_plane_seeding_ = true;
+  pcl::rspd::NormalScale normal_scale_ = pcl::rspd::NormalScale::Automatic;
   pcl::rspd::DetectorParameters params_;
 
   int model_type_;
@@ -366,6 +396,7 @@ protected:
   pcl::rspd::PointSet points_;
   pcl::rspd::NeighborGraph graph_;
   pcl::rspd::DetectorStatistics stats_;
+  pcl::rspd::NormalScaleStatistics normal_scale_stats_;
   std::vector<RobustPlane> planes_;
   std::vector<std::uint32_t> labels_;
 

@@ -292,6 +292,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSmallPlaneSeeding (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNormalScale (pcl::rspd::NormalScale scale)
+{
+  normal_scale_ = scale;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setMaxGrowMergeIterations (int iterations)
 {
   if (iterations < 1)
@@ -570,7 +577,18 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   const auto t1 = std::chrono::steady_clock::now ();
   stats_.graph_seconds = std::chrono::duration<double> (t1 - t0).count ();
   stats_.graph_bytes = graph_.memoryBytes ();
-  if (!normals_)
+  if (!normals_ && normal_scale_ != pcl::rspd::NormalScale::Fixed)
+  {
+    pcl::rspd::estimateAdaptiveScaleNormals (points_.points, graph_, params_.num_threads, points_.normals,
+                                             &normal_scale_stats_,
+                                             normal_scale_ == pcl::rspd::NormalScale::Automatic);
+    stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
+    PCL_DEBUG ("[pcl::%s::segment] no normals given: PCA at an adaptive scale; %zu of %zu samples unresolved "
+               "at k = %d, %zu from a wider scale, %zu unresolved at every scale\n", name,
+               normal_scale_stats_.unresolved_at_k, n, k_, normal_scale_stats_.widened (),
+               normal_scale_stats_.unresolved);
+  }
+  else if (!normals_)
   {
     PCL_DEBUG ("[pcl::%s::segment] no normals given: estimating them by PCA over the %d-neighbourhoods\n",
                name, k_);
@@ -696,6 +714,7 @@ RobustPlaneSegmentation<PointT, NormalT>::compute ()
   planes_.clear ();
   labels_.clear ();
   stats_ = pcl::rspd::DetectorStatistics ();
+  normal_scale_stats_ = pcl::rspd::NormalScaleStatistics ();
   try
   {
     const auto t0 = std::chrono::steady_clock::now ();

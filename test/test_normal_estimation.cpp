@@ -1,0 +1,228 @@
+/*
+ * pcl_rspd: tests of normal estimation: PCA over the k-neighbourhoods, and the adaptive scale that
+ * widens them where noise along the normal swamps them.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/normal_estimation.h>
+
+#include <Eigen/Geometry>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <random>
+#include <vector>
+
+namespace
+{
+using Points = std::vector<Eigen::Vector3f>;
+constexpr double kDegree = M_PI / 180.0;
+
+/** Points in the order the class stores them (spatial), which the adaptive scale relies on. */
+Points
+inSpatialOrder (const Points& p)
+{
+  const std::vector<std::uint32_t> order = pcl::rspd::spatialOrder (p, 2);
+  Points sorted (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    sorted[i] = p[order[i]];
+  return sorted;
+}
+
+/** n samples uniform on the square [-0.5, 0.5]^2 in the plane z = 0, Gaussian noise of \a sigma along
+  * z, centred on the origin and in spatial order. */
+Points
+noisySquare (std::size_t n, float sigma, unsigned seed)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (-0.5f, 0.5f);
+  std::normal_distribution<float> g (0.f, sigma);
+  Points p (n);
+  for (auto& x : p)
+    x = Eigen::Vector3f (u (rng), u (rng), sigma > 0.f ? g (rng) : 0.f);
+  return inSpatialOrder (p);
+}
+
+/** Median angle between the normals and the z axis, over the samples away from the square's border
+  * (where any neighbourhood is one-sided), in degrees. */
+double
+medianErrorDegrees (const Points& p, const Points& normals, const Eigen::Vector3f& truth = Eigen::Vector3f::UnitZ (),
+                    float inner = 0.4f)
+{
+  std::vector<double> a;
+  for (std::size_t i = 0; i < p.size (); ++i)
+    if (std::abs (p[i].x ()) < inner && std::abs (p[i].y ()) < inner)
+      a.push_back (std::acos (std::min (1.0, std::abs (static_cast<double> (normals[i].dot (truth))))) / kDegree);
+  std::nth_element (a.begin (), a.begin () + a.size () / 2, a.end ());
+  return a[a.size () / 2];
+}
+
+struct Estimates
+{
+  Points fixed;
+  Points adaptive;
+  pcl::rspd::NormalScaleStatistics stats;
+};
+
+Estimates
+estimateBoth (const Points& p, int k, int threads = 2)
+{
+  pcl::rspd::NeighborGraph graph;
+  EXPECT_TRUE (pcl::rspd::buildKnnGraph (p, k, threads, graph));
+  Estimates e;
+  pcl::rspd::estimateNormals (p, graph, threads, e.fixed);
+  pcl::rspd::estimateAdaptiveScaleNormals (p, graph, threads, e.adaptive, &e.stats);
+  EXPECT_EQ (e.adaptive.size (), p.size ());
+  const std::size_t total =
+    std::accumulate (e.stats.samples_per_scale.begin (), e.stats.samples_per_scale.end (), std::size_t (0));
+  EXPECT_EQ (total, p.size ());
+  EXPECT_EQ (e.stats.widened () + e.stats.samples_per_scale[0], p.size ());
+  EXPECT_LE (e.stats.unresolved, e.stats.samples_per_scale[0]);
+  std::printf ("    %zu samples: %zu from a wider scale, %zu unresolved, per scale:", p.size (), e.stats.widened (),
+               e.stats.unresolved);
+  for (const auto c : e.stats.samples_per_scale)
+    std::printf (" %zu", c);
+  std::printf ("\n");
+  return e;
+}
+} // namespace
+
+TEST (NormalEstimation, IsotropicRatioQuantileIsReproducibleAndOrdered)
+{
+  const double q = pcl::rspd::isotropicEigenRatioQuantile (50, 0.05);
+  EXPECT_NEAR (q, 0.58, 0.02); // an independent simulation (20,000 draws) gave 0.581
+  EXPECT_EQ (q, pcl::rspd::isotropicEigenRatioQuantile (50, 0.05));
+  // More samples fill the ball more evenly; a higher quantile is a larger ratio.
+  EXPECT_LT (pcl::rspd::isotropicEigenRatioQuantile (20, 0.05), q);
+  EXPECT_LT (q, pcl::rspd::isotropicEigenRatioQuantile (100, 0.05));
+  EXPECT_LT (q, pcl::rspd::isotropicEigenRatioQuantile (50, 0.5));
+  EXPECT_EQ (pcl::rspd::isotropicEigenRatioQuantile (1, 0.05), 0.0);
+  EXPECT_EQ (pcl::rspd::isotropicEigenRatioQuantile (50, 0.0), 0.0);
+  EXPECT_EQ (pcl::rspd::isotropicEigenRatioQuantile (50, 1.0), 0.0);
+}
+
+TEST (NormalEstimation, ResolvedSurfacesKeepTheKScaleNormals)
+{
+  // Noise-free, and noise 1/30 of the neighbourhood's radius: the k-scale resolves every sample
+  // but perhaps a few at the square's corners, and those are the only normals that may change.
+  for (const float sigma : {0.f, 0.001f})
+  {
+    const Points p = noisySquare (20000, sigma, 1);
+    const Estimates e = estimateBoth (p, 50);
+    EXPECT_LE (e.stats.widened (), 20u);
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < p.size (); ++i)
+      changed += e.adaptive[i] != e.fixed[i];
+    EXPECT_LE (changed, e.stats.widened ());
+  }
+}
+
+TEST (NormalEstimation, NoiseAsWideAsTheNeighbourhoodIsResolvedAtAWiderScale)
+{
+  // 20,000 samples on a unit square: the 50-neighbourhood's radius is ~0.028, below the noise
+  // (0.04), so the k-scale normals are mostly noise, as on a million-sample unit cube with 1 % noise
+  // (radius ~0.01).
+  const Points p = noisySquare (20000, 0.04f, 2);
+  const Estimates e = estimateBoth (p, 50);
+  const double fixed = medianErrorDegrees (p, e.fixed), adaptive = medianErrorDegrees (p, e.adaptive);
+  std::printf ("    median error: k-scale %.1f deg, adaptive scale %.1f deg\n", fixed, adaptive);
+  EXPECT_GT (fixed, 30.0);
+  EXPECT_LT (adaptive, 15.0);
+  EXPECT_GT (e.stats.widened (), p.size () / 2);
+  EXPECT_LT (e.stats.unresolved, p.size () / 100);
+}
+
+TEST (NormalEstimation, AdaptiveScaleIsIndependentOfThreadCount)
+{
+  const Points p = noisySquare (30000, 0.03f, 3);
+  const Estimates one = estimateBoth (p, 30, 1), two = estimateBoth (p, 30, 2);
+  EXPECT_TRUE (one.adaptive == two.adaptive);
+  EXPECT_EQ (one.stats.samples_per_scale, two.stats.samples_per_scale);
+}
+
+TEST (NormalEstimation, AdaptiveScaleDoesNotDependOnUnitsOrOrientation)
+{
+  const Points p = noisySquare (20000, 0.03f, 4);
+  const Estimates base = estimateBoth (p, 50);
+
+  // A power of two scales every float operation exactly: the same normals, bit for bit.
+  Points binary (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    binary[i] = 1024.f * p[i];
+  const Estimates b = estimateBoth (binary, 50);
+  EXPECT_TRUE (b.adaptive == base.adaptive);
+  EXPECT_EQ (b.stats.samples_per_scale, base.stats.samples_per_scale);
+
+  // Millimetres and a rotation change the spatial order, hence which samples represent a scale:
+  // the same result statistically.
+  const Eigen::Matrix3f r = Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1.f, 2.f, 3.f).normalized ()).toRotationMatrix ();
+  Points turned (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    turned[i] = 1000.f * (r * p[i]);
+  turned = inSpatialOrder (turned);
+  const Estimates t = estimateBoth (turned, 50);
+  Points back (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    back[i] = r.transpose () * turned[i] / 1000.f;
+  Points normals_back (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    normals_back[i] = r.transpose () * t.adaptive[i];
+  const double e_base = medianErrorDegrees (p, base.adaptive), e_turned = medianErrorDegrees (back, normals_back);
+  std::printf ("    median error: %.2f deg, in mm and turned %.2f deg\n", e_base, e_turned);
+  EXPECT_NEAR (e_turned, e_base, 1.5);
+  EXPECT_NEAR (static_cast<double> (t.stats.widened ()), static_cast<double> (base.stats.widened ()), 0.03 * p.size ());
+}
+
+TEST (NormalEstimation, VolumeWithoutSurfaceIsAccountedFor)
+{
+  // A uniformly filled cube has no surface at any scale: no normal is meaningful, but every sample
+  // still gets a unit normal, and the counts add up (checked in estimateBoth).
+  std::mt19937 rng (5);
+  std::uniform_real_distribution<float> u (-1.f, 1.f);
+  Points p (20000);
+  for (auto& x : p)
+    x = Eigen::Vector3f (u (rng), u (rng), u (rng));
+  p = inSpatialOrder (p);
+  const Estimates e = estimateBoth (p, 30);
+  for (const auto& n : e.adaptive)
+    ASSERT_NEAR (n.norm (), 1.f, 1e-5f);
+  EXPECT_GT (e.stats.unresolved, 0u);
+}
+
+TEST (NormalEstimation, AutomaticScaleWidensOnlyWhenMostSamplesAreUnresolved)
+{
+  // A noise-swamped square (most samples unresolved at the k-scale): the same as Adaptive. The same
+  // square with a quarter of its samples replaced by uniform outliers above it, at a noise the k-scale
+  // resolves: the outliers are unresolved, but the median sample is not, so nothing is widened.
+  const Points noisy = noisySquare (20000, 0.04f, 6);
+  const Estimates e = estimateBoth (noisy, 50);
+  pcl::rspd::NeighborGraph graph;
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (noisy, 50, 2, graph));
+  Points automatic;
+  pcl::rspd::NormalScaleStatistics st;
+  pcl::rspd::estimateAdaptiveScaleNormals (noisy, graph, 2, automatic, &st, true);
+  EXPECT_TRUE (automatic == e.adaptive);
+  EXPECT_TRUE (st.widened_scales);
+  EXPECT_EQ (st.samples_per_scale, e.stats.samples_per_scale);
+
+  std::mt19937 rng (7);
+  std::uniform_real_distribution<float> u (-0.5f, 0.5f);
+  Points mixed = noisySquare (15000, 0.001f, 8);
+  for (int i = 0; i < 5000; ++i)
+    mixed.emplace_back (u (rng), u (rng), 0.5f + u (rng));
+  mixed = inSpatialOrder (mixed);
+  const Estimates m = estimateBoth (mixed, 50);
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (mixed, 50, 2, graph));
+  pcl::rspd::estimateAdaptiveScaleNormals (mixed, graph, 2, automatic, &st, true);
+  EXPECT_GT (st.unresolved_at_k, 1000u);
+  EXPECT_LT (2 * st.unresolved_at_k, mixed.size ());
+  EXPECT_FALSE (st.widened_scales);
+  EXPECT_EQ (st.widened (), 0u);
+  EXPECT_EQ (st.unresolved, st.unresolved_at_k);
+  EXPECT_TRUE (automatic == m.fixed);
+  EXPECT_GT (m.stats.widened (), 0u); // Adaptive does widen some of the outliers
+}
