@@ -429,12 +429,9 @@ runRspd (const std::string& input, const std::string& output, int threads)
   seg.setInputCloud (cloud.xyz);
   if (threads > 0)
     seg.setNumberOfThreads (static_cast<unsigned int> (threads));
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> indices;
-  seg.segment (coefficients, indices);
+  const std::vector<pcl::RobustPlane>& planes = seg.getPlanes (); // runs the detection, as rspd_segment
   if (!seg.hasResult ())
     throw std::runtime_error ("RobustPlaneSegmentation failed");
-  const std::vector<pcl::RobustPlane>& planes = seg.getPlanes ();
   const double t_detect = secondsSince (t1);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
 

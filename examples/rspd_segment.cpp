@@ -304,13 +304,11 @@ run (const Options& o)
                             ? "estimated"
                             : (o.normal_scale == pcl::rspd::NormalScale::Adaptive ? "estimated, adaptive scale,"
                                                                                     : "estimated, automatic scale,")));
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> indices;
-  seg.segment (coefficients, indices);
+  // getPlanes runs the detection; segment () would only copy every plane's indices once more.
+  const std::vector<pcl::RobustPlane>& planes = seg.getPlanes ();
   if (!seg.hasResult ())
     return fail ("plane detection failed on " + std::to_string (valid) + " finite points" +
                  (o.verbose ? std::string () : std::string (" (run with -v for details)")));
-  const std::vector<pcl::RobustPlane>& planes = seg.getPlanes ();
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %d grow-merge iterations,"

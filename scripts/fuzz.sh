@@ -20,18 +20,7 @@ targets=("$@")
 # clang-14 with libFuzzer and the sanitizer runtimes (libclang-rt-14-dev), and LLVM's OpenMP
 # (libomp-14-dev: the top-level find_package(OpenMP) needs it with clang, although the fuzz targets
 # link GCC's libgomp, see fuzz/CMakeLists.txt). The normal build and its tests need none of them.
-bash scripts/install_deps.sh
-packages=(clang-14 libclang-rt-14-dev libomp-14-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "installing: ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+bash scripts/install_deps.sh clang-14 libclang-rt-14-dev libomp-14-dev
 
 # -O2 -g without NDEBUG: Eigen's own bounds assertions stay on in our code.
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what pcl_rspd needs on Debian bookworm (run as root). Does nothing when all is there.
 set -euo pipefail
+# Extra package names given as arguments are installed too (scripts/fuzz.sh passes clang's).
 packages=(cmake g++ make pkg-config libpcl-dev libeigen3-dev libflann-dev libboost-dev libgtest-dev
-          libpng-dev python3-catkin-pkg libbenchmark-dev)
+          libpng-dev python3-catkin-pkg libbenchmark-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
