@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <pcl_rspd/robust_plane_segmentation.h>
+#include <pcl_rspd/impl/robust_plane_segmentation.hpp> // detail::convexHull2D
 
 #include <pcl/search/kdtree.h>
 
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 
@@ -456,4 +458,33 @@ TEST (RobustPlaneSegmentation, OtherPointTypesAreInstantiated)
   std::vector<pcl::PointIndices> i;
   seg.segment (c, i);
   EXPECT_EQ (i.size (), 3u);
+}
+
+TEST (RobustPlaneSegmentation, ConvexHullOfManyPointsIsTheHull)
+{
+  // Above 64 points the hull drops points inside the octagon of extremes before sorting: the
+  // result must still be the convex hull: convex, counter-clockwise, made of input points, and
+  // holding every input point.
+  std::mt19937 rng (5);
+  std::normal_distribution<double> g (0.0, 1.0);
+  for (const std::size_t n : {65u, 1000u, 20000u})
+  {
+    std::vector<Eigen::Vector2d> pts (n);
+    for (auto& p : pts)
+      p = Eigen::Vector2d (3.0 * g (rng), g (rng));
+    const std::vector<Eigen::Vector2d> hull = pcl::rspd::detail::convexHull2D (pts);
+    ASSERT_GE (hull.size (), 3u);
+    const auto cross = [] (const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+      return (a.x () - o.x ()) * (b.y () - o.y ()) - (a.y () - o.y ()) * (b.x () - o.x ());
+    };
+    for (std::size_t e = 0; e < hull.size (); ++e)
+    {
+      const Eigen::Vector2d& a = hull[e];
+      const Eigen::Vector2d& b = hull[(e + 1) % hull.size ()];
+      EXPECT_GT (cross (a, b, hull[(e + 2) % hull.size ()]), 0.0) << "convex, counter-clockwise";
+      EXPECT_NE (std::find (pts.begin (), pts.end (), a), pts.end ()) << "a vertex is an input point";
+      for (const auto& p : pts)
+        ASSERT_GE (cross (a, b, p), -1e-9) << "every point inside, n = " << n;
+    }
+  }
 }
