@@ -25,7 +25,8 @@ namespace
 {
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--threads N] [-v]";
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off]"
+    " [--curved-check on|off] [--assign edges|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -43,6 +44,13 @@ const char* const kHelp =
     "                   finest scale that resolves a surface where noise swamps the k-neighbourhood\n"
     "                   ('adaptive'), or that only when it swamps most of them ('auto', the\n"
     "                   default); ignored when the input has normals\n"
+    "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
+    "                   of the plane the merged group keeps (default on; off = the paper)\n"
+    "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
+    "                   a quarter of their residual and bends past their MND (default on; off = paper)\n"
+    "  --assign M       once growth is stable, give points growth left out to a neighbouring plane\n"
+    "                   by distance alone: next to two or more planes ('edges', the default),\n"
+    "                   next to any ('all'), or none ('none', the paper)\n"
     "  --threads N      OpenMP threads (default: OpenMP's default, OMP_NUM_THREADS is honoured)\n"
     "  -v               progress and per-stage timings on stderr\n"
     "\n"
@@ -61,6 +69,9 @@ struct Options
   int k = 50;
   int threads = 0;  // 0: leave OpenMP's default
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
+  bool coplanar_merge = true;
+  bool curved_check = true;
+  pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Edges;
   bool verbose = false;
   bool help = false;
 };
@@ -172,6 +183,32 @@ parseArguments (int argc, char** argv)
         o.normal_scale = pcl::rspd::NormalScale::Automatic;
       else
         throw UsageError{"--normal-scale needs 'fixed', 'adaptive' or 'auto' (got '" + v + "')"};
+    }
+    else if (arg == "--coplanar-merge")
+    {
+      const std::string v = value ();
+      if (v != "on" && v != "off")
+        throw UsageError{"--coplanar-merge needs 'on' or 'off' (got '" + v + "')"};
+      o.coplanar_merge = v == "on";
+    }
+    else if (arg == "--curved-check")
+    {
+      const std::string v = value ();
+      if (v != "on" && v != "off")
+        throw UsageError{"--curved-check needs 'on' or 'off' (got '" + v + "')"};
+      o.curved_check = v == "on";
+    }
+    else if (arg == "--assign")
+    {
+      const std::string v = value ();
+      if (v == "edges")
+        o.assignment = pcl::rspd::FinalAssignment::Edges;
+      else if (v == "all")
+        o.assignment = pcl::rspd::FinalAssignment::All;
+      else if (v == "none")
+        o.assignment = pcl::rspd::FinalAssignment::None;
+      else
+        throw UsageError{"--assign needs 'edges', 'all' or 'none' (got '" + v + "')"};
     }
     else if (arg == "--threads" || arg == "-t")
     {
@@ -295,6 +332,9 @@ run (const Options& o)
     seg.setInputNormals (cloud.normals);
   seg.setNumberOfNeighbours (o.k);
   seg.setNormalScale (o.normal_scale);
+  seg.setCoplanarMerge (o.coplanar_merge);
+  seg.setCurvedPlaneCheck (o.curved_check);
+  seg.setFinalAssignment (o.assignment);
   if (o.threads > 0)
     seg.setNumberOfThreads (static_cast<unsigned int> (o.threads));
   log ("detecting planes (k = %d, %s threads, %s normals)", o.k,

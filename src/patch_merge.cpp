@@ -50,9 +50,75 @@ normalsCompatible (const PlanarPatch& a, const PlanarPatch& b)
   return angle < std::max (a.mnd, b.mnd);
 }
 
+namespace
+{
+/** M4 applied to the candidate pairs (M1-M3 met) in a fixed order, see mergePatches. */
+void
+uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& patches,
+                     std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, double max_outlier_ratio,
+                     UnionFind& sets)
+{
+  const auto larger = [&] (std::uint32_t p, std::uint32_t q) {
+    if (patches[p].members.size () != patches[q].members.size ())
+      return patches[p].members.size () > patches[q].members.size ();
+    return patches[p].first_index < patches[q].first_index;
+  };
+  std::sort (pairs.begin (), pairs.end ());
+  pairs.erase (std::unique (pairs.begin (), pairs.end ()), pairs.end ());
+  // Each pair as (larger, smaller); the pair with the larger first patch first, then the larger second.
+  for (auto& pr : pairs)
+    if (larger (pr.second, pr.first))
+      std::swap (pr.first, pr.second);
+  std::sort (pairs.begin (), pairs.end (), [&] (const auto& x, const auto& y) {
+    if (x.first != y.first)
+      return larger (x.first, y.first);
+    return x.second != y.second && larger (x.second, y.second);
+  });
+  // Per union-find root: the group's representative and its member patches.
+  std::vector<std::uint32_t> representative (patches.size ());
+  std::vector<std::vector<std::uint32_t>> group (patches.size ());
+  for (std::uint32_t p = 0; p < patches.size (); ++p)
+  {
+    representative[p] = p;
+    group[p].assign (1, p);
+  }
+  for (const auto& pr : pairs)
+  {
+    const std::uint32_t ra = sets.find (pr.first), rb = sets.find (pr.second);
+    if (ra == rb)
+      continue;
+    const bool a_leads = larger (representative[ra], representative[rb]);
+    const std::uint32_t lead = a_leads ? ra : rb, other = a_leads ? rb : ra;
+    const PlanarPatch& plane = patches[representative[lead]];
+    std::size_t total = 0, inside = 0;
+    // The band is the wider of the two groups' (their representatives' MDP): a noisier part of the
+    // same plane (farther from the scanner) or a patch of its noise tails (samples the leading plane
+    // turned down, seeded again by the small-plane pass) still joins; a face bent away does not.
+    const double band = std::max (plane.mdp, patches[representative[other]].mdp);
+    for (const auto q : group[other])
+      for (const auto m : patches[q].members)
+      {
+        ++total;
+        inside += std::abs ((points.points[m].cast<double> () - plane.center).dot (plane.normal)) <= band;
+      }
+    if (static_cast<double> (inside) < (1.0 - max_outlier_ratio) * static_cast<double> (total))
+      continue;
+    const std::uint32_t lead_rep = representative[lead];
+    std::vector<std::uint32_t> joined;
+    joined.swap (group[lead]);
+    joined.insert (joined.end (), group[other].begin (), group[other].end ());
+    group[other].clear ();
+    sets.unite (ra, rb);
+    const std::uint32_t root = sets.find (ra);
+    group[root].swap (joined);
+    representative[root] = lead_rep;
+  }
+}
+} // namespace
+
 std::size_t
 mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
-              std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags)
+              std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags, const MergeRules& rules)
 {
   if (flags && flags->size () != points.size ())
     flags->assign (points.size (), 0);
@@ -60,6 +126,7 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
   if (num_patches < 2)
     return 0;
   UnionFind sets (num_patches);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs; // M1-M3 met (rules.coplanar only)
   // Every directed edge is visited once, which covers "an edge in either direction" (M1).
   for (std::size_t i = 0; i < graph.size (); ++i)
   {
@@ -70,7 +137,7 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
     graph.forEachNeighbor (i, [&] (std::uint32_t n) {
       const std::uint32_t b = labels[n];
       interior = interior && b == a;
-      if (b == kNoPatch || b == a || sets.find (a) == sets.find (b))
+      if (b == kNoPatch || b == a || (!rules.coplanar && sets.find (a) == sets.find (b)))
         return;
       const PlanarPatch& pa = patches[a];
       const PlanarPatch& pb = patches[b];
@@ -78,11 +145,18 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
         return;
       if (pb.isInlier (points.points[i], points.normals[i]) ||                // M3
           pa.isInlier (points.points[n], points.normals[n]))
-        sets.unite (a, b);
+      {
+        if (rules.coplanar)
+          pairs.emplace_back (std::min (a, b), std::max (a, b));
+        else
+          sets.unite (a, b);
+      }
     });
     if (flags && interior)
       (*flags)[i] |= kInterior | kSaturated;
   }
+  if (rules.coplanar)
+    uniteCoplanarGroups (points, patches, pairs, rules.max_outlier_ratio, sets);
 
   // Representative of each group: the largest patch, ties by lowest member index.
   std::vector<std::uint32_t> representative (num_patches, kNoPatch);

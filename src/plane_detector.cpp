@@ -6,6 +6,7 @@
 #include <pcl_rspd/octree_split.h>
 #include <pcl_rspd/patch_growth.h>
 #include <pcl_rspd/patch_merge.h>
+#include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/robust_statistics.h>
 
@@ -13,6 +14,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
 
 namespace pcl
 {
@@ -44,6 +48,189 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
   }
   return updated;
 }
+/** Last assignment pass (departure, DetectorParameters::final_assignment): a sample no patch holds
+  * joins the plane of a graph neighbour whose distance band it lies in (|d| <= MDP; the nearest
+  * relative to MDP when several do, ties to the lower label), provided it is also among that
+  * neighbour's k nearest (mutual neighbours: an isolated outlier is nobody's neighbour). The normal
+  * condition is left out on purpose: PCA normals bend within a neighbourhood radius of an edge,
+  * which is exactly where growth stops short. Edges: only samples next to two or more planes (an
+  * edge band), so clutter and outliers beside a single plane stay out. Each round reads the labels
+  * of the round before, so the result does not depend on the thread count.
+  * \return samples assigned */
+std::size_t
+assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                        std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+{
+  const bool edges_only = params.final_assignment == FinalAssignment::Edges;
+  std::vector<std::uint32_t> left;
+  for (std::uint32_t i = 0; i < labels.size (); ++i)
+    if (labels[i] == kNoPatch)
+      left.push_back (i);
+  std::vector<std::uint32_t> choice (left.size ());
+  std::size_t assigned = 0;
+  for (;;)
+  {
+    const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (left.size ());
+#pragma omp parallel for schedule(dynamic, 256) num_threads(resolveThreads (params.num_threads))
+    for (std::ptrdiff_t j = 0; j < count; ++j)
+    {
+      const std::uint32_t i = left[j];
+      choice[j] = kNoPatch;
+      if (edges_only)
+      {
+        std::uint32_t first = kNoPatch;
+        bool several = false;
+        graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+          const std::uint32_t l = labels[n];
+          if (l != kNoPatch && first == kNoPatch)
+            first = l;
+          several = several || (l != kNoPatch && l != first);
+        });
+        if (!several)
+          continue;
+      }
+      const Eigen::Vector3d p = points.points[i].cast<double> ();
+      double best = HUGE_VAL;
+      graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+        const std::uint32_t l = labels[n];
+        if (l == kNoPatch || l == choice[j])
+          return;
+        const PlanarPatch& patch = patches[l];
+        const double r = std::abs ((p - patch.center).dot (patch.normal)) / patch.mdp;
+        if (!(r <= 1.0) || r > best || (r == best && l > choice[j]))
+          return;
+        bool mutual = false;
+        graph.forEachNeighbor (n, [&] (std::uint32_t m) { mutual = mutual || m == i; });
+        if (!mutual)
+          return;
+        best = r;
+        choice[j] = l;
+      });
+    }
+    std::size_t kept = 0, added = 0;
+    for (std::size_t j = 0; j < left.size (); ++j)
+    {
+      if (choice[j] == kNoPatch)
+      {
+        left[kept] = left[j];
+        choice[kept++] = kNoPatch;
+        continue;
+      }
+      labels[left[j]] = choice[j];
+      patches[choice[j]].members.push_back (left[j]);
+      ++added;
+    }
+    left.resize (kept);
+    assigned += added;
+    if (added == 0)
+      return assigned;
+  }
+}
+
+} // namespace
+
+PlaneCurvature
+measureCurvature (const PointSet& points, const std::vector<std::uint32_t>& members)
+{
+  PlaneCurvature c;
+  if (members.size () < 12)
+    return c;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+  for (const auto m : members)
+    mean += points.points[m].cast<double> ();
+  mean /= static_cast<double> (members.size ());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
+  for (const auto m : members)
+  {
+    const Eigen::Vector3d q = points.points[m].cast<double> () - mean;
+    scatter += q * q.transpose ();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (scatter);
+  const Eigen::Vector3d n = solver.eigenvectors ().col (0);
+  const Eigen::Vector3d u = solver.eigenvectors ().col (2);
+  const Eigen::Vector3d v = solver.eigenvectors ().col (1);
+  // In-plane coordinates scaled to about unit range, so the normal equations are well conditioned.
+  const double scale = std::sqrt (std::max (solver.eigenvalues () (2) / static_cast<double> (members.size ()), 1e-300));
+  Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
+  Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
+  double rss_plane = 0.0;
+  for (const auto m : members)
+  {
+    const Eigen::Vector3d q = points.points[m].cast<double> () - mean;
+    const double x = q.dot (u) / scale, y = q.dot (v) / scale, w = q.dot (n);
+    Eigen::Matrix<double, 6, 1> f;
+    f << x * x, x * y, y * y, x, y, 1.0;
+    a.selfadjointView<Eigen::Lower> ().rankUpdate (f);
+    b += f * w;
+    rss_plane += w * w;
+  }
+  if (!(rss_plane > 0.0))
+    return c;
+  a.triangularView<Eigen::StrictlyUpper> () = a.transpose ();
+  // Rank-revealing: samples on a few scan lines leave the quadric terms undetermined.
+  const Eigen::Matrix<double, 6, 1> coef = a.completeOrthogonalDecomposition ().solve (b);
+  const double explained = coef.dot (b);
+  if (!std::isfinite (explained))
+    return c;
+  c.share = std::min (1.0, std::max (0.0, explained / rss_plane));
+  // Hessian of w(u, v) in the data's units: its largest curvature times the half extent along that
+  // direction is the slope, hence the turn of the normal, from the middle of the patch to its rim.
+  Eigen::Matrix2d h;
+  h << 2.0 * coef (0), coef (1), coef (1), 2.0 * coef (2);
+  h /= scale * scale;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> bend (h);
+  const int k = std::abs (bend.eigenvalues () (0)) > std::abs (bend.eigenvalues () (1)) ? 0 : 1;
+  const double kappa = std::abs (bend.eigenvalues () (k));
+  const Eigen::Vector3d along = bend.eigenvectors () (0, k) * u + bend.eigenvectors () (1, k) * v;
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto m : members)
+  {
+    const double t = (points.points[m].cast<double> () - mean).dot (along);
+    lo = std::min (lo, t);
+    hi = std::max (hi, t);
+  }
+  // Slope of the quadric at the rim, half the extent away along its most curved direction.
+  c.half_bend = std::isfinite (kappa) ? std::atan (0.5 * kappa * (hi - lo)) : 0.0;
+  return c;
+}
+
+namespace
+{
+/** Drop every plane that is a facet of a curved surface (departure, see
+  * DetectorParameters::min_curvature_share). \return planes dropped */
+std::size_t
+dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+{
+  std::vector<char> curved (patches.size (), 0);
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (patches.size ());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
+  for (std::ptrdiff_t p = 0; p < count; ++p)
+  {
+    const PlaneCurvature c = measureCurvature (points, patches[p].members);
+    // Curved: the bend explains a good share of the residual and accounts for at least half of the
+    // patch's normal tolerance (a facet of a curved surface grows until its rim normals reach MND,
+    // so its half-bend is about 2/3 of MND; a scanned wall bends by a small part of it). A quadric
+    // that leaves no residual at all was not determined by the samples (a few scan lines, which six
+    // coefficients interpolate), so such a patch is not judged.
+    curved[p] = c.share >= params.min_curvature_share && c.share <= 0.999 && c.half_bend >= 0.5 * patches[p].mnd;
+  }
+  std::size_t dropped = 0;
+  std::size_t kept = 0;
+  for (std::size_t p = 0; p < patches.size (); ++p)
+  {
+    if (curved[p])
+    {
+      ++dropped;
+      continue;
+    }
+    if (kept != p)
+      patches[kept] = std::move (patches[p]);
+    ++kept;
+  }
+  patches.resize (kept);
+  return dropped;
+}
+
 /** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
 void
 growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
@@ -61,7 +248,10 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
     }
     ++st.iterations;
     growPatches (points, graph, patches, labels, &flags);
-    st.merges += mergePatches (points, graph, patches, labels, &flags);
+    MergeRules rules;
+    rules.coplanar = params.coplanar_merge;
+    rules.max_outlier_ratio = params.max_outlier_ratio;
+    st.merges += mergePatches (points, graph, patches, labels, &flags, rules);
     const std::size_t updated = reestimateGrownPatches (points, params, patches);
     st.reestimations += updated;
     if (updated == 0)
@@ -127,6 +317,15 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                      [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
                      patches.end ());
     }
+  }
+
+  if (params.min_curvature_share <= 1.0)
+    st.curved_planes = dropCurvedPlanes (points, params, patches);
+
+  if (params.final_assignment != FinalAssignment::None && !patches.empty ())
+  {
+    labels = labelSamples (points.size (), patches); // the small-plane pass may have dropped patches
+    st.assigned = assignRemainingSamples (points, graph, params, patches, labels);
   }
 
   st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();

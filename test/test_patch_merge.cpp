@@ -87,5 +87,66 @@ TEST (PatchMerge, OneBoundaryInlierIsEnoughForM3)
   std::vector<PlanarPatch> patches{rspd_test::makePatch (a, {0.25, 0.5, 0}, {0, 0, 1}, 0.002, 0.1),
                                    rspd_test::makePatch (b, {0.75, 0.5, 0.01}, nb, 0.0001, 0.1)};
   auto labels = labelSamples (s.size (), patches);
+  EXPECT_EQ (mergePatches (s, g, patches, labels, nullptr, MergeRules::paper ()), 1u);
+}
+
+namespace
+{
+/** A flat strip A, then B bent up by 20° from A's edge, then C bent by 20° more from B's edge:
+  * every adjacent pair is within MND (0.6 rad) and meets M3 along the fold. */
+struct BentStrips
+{
+  PointSet s;
+  std::vector<PlanarPatch> patches;
+  NeighborGraph g;
+
+  BentStrips ()
+  {
+    const float deg = 3.14159265f / 180.0f;
+    const Eigen::Vector3f ab (0.25f * std::cos (20 * deg), 0, 0.25f * std::sin (20 * deg));
+    const Eigen::Vector3f bc (0.2f * std::cos (40 * deg), 0, 0.2f * std::sin (40 * deg));
+    const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {0.5f, 0, 0}, {0, 1, 0}, 20, 20);
+    const auto b = rspd_test::addRectangle (s, {0.5f, 0, 0}, ab, {0, 1, 0}, 10, 20);
+    const Eigen::Vector3f c0 = Eigen::Vector3f (0.5f, 0, 0) + ab;
+    const auto c = rspd_test::addRectangle (s, c0, bc, {0, 1, 0}, 8, 20);
+    g = rspd_test::bruteForceGraph (s.points, 8);
+    const auto normal = [] (const Eigen::Vector3f& u) { return Eigen::Vector3d (-u.z (), 0, u.x ()).normalized (); };
+    patches = {rspd_test::makePatch (a, {0.25, 0.5, 0}, {0, 0, 1}, 0.01, 0.6),
+               rspd_test::makePatch (b, (Eigen::Vector3f (0.5f, 0.5f, 0) + 0.5f * ab).cast<double> (), normal (ab), 0.01, 0.6),
+               rspd_test::makePatch (c, (c0 + Eigen::Vector3f (0, 0.5f, 0) + 0.5f * bc).cast<double> (), normal (bc), 0.01, 0.6)};
+  }
+};
+} // namespace
+
+TEST (PatchMerge, PaperRulesChainFacetsAroundABend)
+{
+  BentStrips f;
+  auto labels = labelSamples (f.s.size (), f.patches);
+  EXPECT_EQ (mergePatches (f.s, f.g, f.patches, labels, nullptr, MergeRules::paper ()), 2u);
+  EXPECT_EQ (f.patches.size (), 1u); // A, B and C, 40° apart at the ends, became one "plane"
+}
+
+TEST (PatchMerge, CoplanarGroupsStopTheChain)
+{
+  BentStrips f;
+  auto labels = labelSamples (f.s.size (), f.patches);
+  EXPECT_EQ (mergePatches (f.s, f.g, f.patches, labels), 0u); // M4 is on by default
+  EXPECT_EQ (f.patches.size (), 3u);
+}
+
+TEST (PatchMerge, CoplanarGroupsStillJoinANoisierPartOfTheSamePlane)
+{
+  // B continues A's plane with 4x the noise (a farther, sparser part of a scanned wall). Most of B
+  // lies outside A's band, but inside its own: the wider band decides, and they merge.
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {0.5f, 0, 0}, {0, 1, 0}, 20, 20, 0.002f, 1);
+  const auto b = rspd_test::addRectangle (s, {0.5f, 0, 0}, {0.5f, 0, 0}, {0, 1, 0}, 10, 10, 0.008f, 2);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<PlanarPatch> patches{rspd_test::makePatch (a, {0.25, 0.5, 0}, {0, 0, 1}, 0.005, 0.3),
+                                   rspd_test::makePatch (b, {0.75, 0.5, 0}, {0, 0, 1}, 0.02, 0.3)};
+  auto labels = labelSamples (s.size (), patches);
   EXPECT_EQ (mergePatches (s, g, patches, labels), 1u);
+  ASSERT_EQ (patches.size (), 1u);
+  EXPECT_EQ (patches[0].members.size (), 500u);
+  EXPECT_EQ (patches[0].mdp, 0.005); // the larger patch represents the group and keeps its plane
 }

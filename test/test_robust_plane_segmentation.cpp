@@ -228,27 +228,32 @@ TEST (RobustPlaneSegmentation, FindsTheThreeFacesWithConsistentOutputs)
       EXPECT_GE (indices[p - 1].indices.size (), indices[p].indices.size ()) << "largest first";
     EXPECT_GT (indices[p].indices.size (), 2400u);
     EXPECT_TRUE (std::is_sorted (indices[p].indices.begin (), indices[p].indices.end ()));
-    // Each plane lies on one face; the normal points towards the sensor origin (2, 2, 2).
+    // Each plane lies on one face (up to the few samples right at an edge, within MDP of both
+    // faces); the normal points towards the sensor origin (2, 2, 2).
     std::map<int, int> faces;
     for (const auto i : indices[p].indices)
     {
       ++faces[truth[i]];
       EXPECT_EQ (labels[i], p + 1);
     }
-    EXPECT_EQ (faces.size (), 1u);
+    const auto face = std::max_element (faces.begin (), faces.end (),
+                                        [] (const auto& a, const auto& b) { return a.second < b.second; })->first;
+    EXPECT_GE (faces[face], static_cast<int> (indices[p].indices.size () * 99 / 100));
     const auto& v = coefficients[p].values;
     EXPECT_GT (v[0] * 2 + v[1] * 2 + v[2] * 2 + v[3], 0.0f);
-    EXPECT_NEAR (std::abs (v[faces.begin ()->first - 1]), 1.0f, 0.01f);
+    EXPECT_NEAR (std::abs (v[face - 1]), 1.0f, 0.01f);
     EXPECT_NEAR (v[3], 0.0f, 0.01f);
     const pcl::RobustPlane& plane = seg.getPlanes ()[p];
     EXPECT_GT (plane.mdp, 0.0);
     EXPECT_LT (plane.mdp, 0.02);
     EXPECT_GE (plane.hull.size (), 4u);
-    // A unit face; PCA normals bend within a few spacings of the edges, so the plane stops short.
-    EXPECT_NEAR (plane.rect_size[0], 0.95, 0.05);
-    EXPECT_NEAR (plane.rect_size[1], 0.95, 0.05);
+    // A unit face. PCA normals bend within a few spacings of the edges, where growth stops; the
+    // last assignment pass gives those samples to the face they are nearest, so the plane reaches
+    // the edges (without it, about 0.95: see FinalAssignmentReachesTheEdges).
+    EXPECT_NEAR (plane.rect_size[0], 1.0, 0.02);
+    EXPECT_NEAR (plane.rect_size[1], 1.0, 0.02);
     EXPECT_LE (plane.rect_size[1], plane.rect_size[0]);
-    EXPECT_NEAR (plane.centroid[faces.begin ()->first - 1], 0.0, 0.01);
+    EXPECT_NEAR (plane.centroid[face - 1], 0.0, 0.01);
   }
   // The caller's cloud is untouched.
   ASSERT_EQ (before.size (), cloud->size ());
@@ -297,6 +302,38 @@ TEST (RobustPlaneSegmentation, OwnNeighbourGraphAgreesWithKdTreeSearch)
   b.setSearchMethod (std::make_shared<pcl::search::KdTree<pcl::PointXYZ>> ());
   const auto la = labelsOf (a), lb = labelsOf (b);
   EXPECT_GE (agreement (la, lb), 0.999);
+}
+
+TEST (RobustPlaneSegmentation, FinalAssignmentReachesTheEdges)
+{
+  std::vector<int> truth;
+  auto cloud = boxCorner (3000, &truth);
+  std::size_t labelled[3] = {0, 0, 0};
+  double extent[3] = {0, 0, 0};
+  int run = 0;
+  for (const auto mode : {pcl::rspd::FinalAssignment::None, pcl::rspd::FinalAssignment::Edges, pcl::rspd::FinalAssignment::All})
+  {
+    pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+    seg.setInputCloud (cloud);
+    seg.setFinalAssignment (mode);
+    EXPECT_EQ (seg.getFinalAssignment (), mode);
+    std::vector<pcl::ModelCoefficients> c;
+    std::vector<pcl::PointIndices> ind;
+    seg.segment (c, ind);
+    ASSERT_EQ (ind.size (), 3u);
+    for (const auto& pi : ind)
+      labelled[run] += pi.indices.size ();
+    extent[run] = seg.getPlanes ()[0].rect_size[1];
+    ++run;
+  }
+  // The paper stops short of the edges; the pass fills the bands of bent normals. Nearly every
+  // sample left out is next to two faces here, so All adds only a handful to Edges (the outer rims).
+  EXPECT_LT (extent[0], 0.98);
+  EXPECT_GT (extent[1], 0.99);
+  EXPECT_GT (labelled[1], labelled[0] + 150);
+  EXPECT_GE (labelled[1], 9000u * 99 / 100);
+  EXPECT_GE (labelled[2], labelled[1]);
+  EXPECT_LE (labelled[2], labelled[1] + 20);
 }
 
 TEST (RobustPlaneSegmentation, GivenNormalsAreUsed)

@@ -17,6 +17,14 @@ namespace pcl
 {
 namespace rspd
 {
+/** \brief The last assignment pass (see DetectorParameters::final_assignment). */
+enum class FinalAssignment
+{
+  None,  ///< the paper: a sample growth did not take stays unassigned
+  Edges, ///< samples whose neighbours belong to two or more planes (edge bands of bent normals)
+  All    ///< every sample with a labelled neighbour (also takes clutter and outliers near a plane)
+};
+
 /** \brief Every constant of the method, with the paper's values as defaults. Angles in radians. */
 struct DetectorParameters
 {
@@ -47,6 +55,26 @@ struct DetectorParameters
     * is no larger than the largest MND of the planes already found, grow-merge again, and drop every
     * plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a neighbour. */
   std::size_t small_cell_size = 0;
+  /** \brief Departure (M4, coplanar groups): two groups merge only if at least (1 - T3 ratio) of the
+    * samples of the group whose representative is smaller lie within the larger representative's
+    * plane (the plane the merged group keeps) by the wider of the two representatives' MDP. Pairs
+    * meeting M1-M3 are joined largest representative first. false = the paper's transitive union of
+    * every pair, which lets small steps (facets of a faceted or curved object, each within MND of
+    * the next) chain a plane around a bend. */
+  bool coplanar_merge = true;
+  /** \brief Departure (last assignment): which samples no patch holds are offered to the planes of
+    * their graph neighbours once grow-merge is stable, by distance alone (|d| <= MDP, nearest
+    * relative to MDP; the sample must be among its neighbour's k nearest too). */
+  FinalAssignment final_assignment = FinalAssignment::Edges;
+  /** \brief Departure (residual pattern, the paper's Sec. 5 suggestion): once grow-merge is stable,
+    * a quadric w = f(u, v) is fitted to each plane's samples over its least-squares plane
+    * (measureCurvature), and the plane is dropped as a facet of a curved surface (pipe, tank, pillar,
+    * ball) when the quadric explains at least this share of the residual variance (the deviation is
+    * a bend, not noise) and turns the normal from the middle to the rim by at least half the plane's
+    * MND (the bend, not noise, is what spreads its normals; a facet of a curved surface grows until
+    * its rim normals reach MND, a scanned wall bends by a small part of it). Exact quadric fits (a few
+    * scan lines) are not judged. Default 0.25, T3's share; above 1 = off, the paper. */
+  double min_curvature_share = 0.25;
   /** \brief Safety cap on grow-merge iterations (Sec. 3.5); hitting it is logged. */
   int max_iterations = 100;
   /** \brief Octree depth cap: subdivision also stops where all samples of a cell coincide. */
@@ -74,6 +102,8 @@ struct DetectorStatistics
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
   std::size_t merges = 0;            ///< patches absorbed by merging
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept
+  std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
+  std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check
   bool hit_iteration_cap = false;
   double prepare_seconds = 0.0;      ///< valid samples, centring, spatial order (wall time)
   double graph_seconds = 0.0;        ///< building the k-NN graph (wall time)
@@ -83,6 +113,20 @@ struct DetectorStatistics
   double grow_merge_seconds = 0.0;   ///< grow-merge iterations
   double output_seconds = 0.0;       ///< plane outputs: indices, labels, centroids, hulls, rectangles
 };
+
+/** \brief How much a set of samples bends away from its least-squares plane (the curved-surface
+  * check, DetectorParameters::min_curvature_share). */
+struct PlaneCurvature
+{
+  double share = 0.0;     ///< 1 - RSS(quadric) / RSS(plane): share of the residual a quadric explains
+  double half_bend = 0.0; ///< radians the quadric's normal turns from the middle of the samples to their rim
+};
+
+/** \brief Fit w = a u² + b uv + c v² + d u + e v + f over the samples' least-squares plane (u, v in
+  * the plane, w along its normal) and report how much of the residual the bend explains and how far
+  * it turns the normal. Fewer than 12 samples or no residual: zeros. */
+PlaneCurvature
+measureCurvature (const PointSet& points, const std::vector<std::uint32_t>& members);
 
 /** \brief Run split (Sec. 3.1), then grow (3.3) and merge (3.4) until stable (3.5).
   * \param[in] points valid samples with normals

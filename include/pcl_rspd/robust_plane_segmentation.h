@@ -242,6 +242,34 @@ public:
   bool
   getSmallPlaneSeeding () const { return small_plane_seeding_; }
 
+  /** \brief M4, coplanar groups (default true; false = the paper's transitive M1-M3): a group joins
+    * another only if most of its samples lie in the distance band of the plane the merged group
+    * keeps. See pcl::rspd::DetectorParameters::coplanar_merge. */
+  void
+  setCoplanarMerge (bool enable);
+  /** \brief Whether merging checks M4. */
+  bool
+  getCoplanarMerge () const { return params_.coplanar_merge; }
+
+  /** \brief Curved-surface check (default on; off = the paper): a plane is dropped when a quadric
+    * fitted to its samples explains at least a quarter of its residual variance and turns the
+    * surface normal by more than the plane's MND between its middle and its rim (a facet of a pipe,
+    * tank, pillar or ball). See pcl::rspd::DetectorParameters::min_curvature_share. */
+  void
+  setCurvedPlaneCheck (bool enable);
+  /** \brief Whether curved-surface facets are dropped. */
+  bool
+  getCurvedPlaneCheck () const { return params_.min_curvature_share <= 1.0; }
+
+  /** \brief Last assignment pass once grow-merge is stable (default Edges; None = the paper): samples
+    * growth left out join a neighbouring plane by distance alone. See
+    * pcl::rspd::DetectorParameters::final_assignment. */
+  void
+  setFinalAssignment (pcl::rspd::FinalAssignment mode);
+  /** \brief Which samples the last assignment pass offers to planes. */
+  pcl::rspd::FinalAssignment
+  getFinalAssignment () const { return params_.final_assignment; }
+
   /** \brief Where estimated normals come from (used only without setInputNormals; default
     * pcl::rspd::NormalScale::Automatic; Fixed is the paper's, the sample's k-neighbourhood). Where noise along the normal is
     * about as large as a k-neighbourhood's radius (a million samples on a unit cube with 1 % noise),

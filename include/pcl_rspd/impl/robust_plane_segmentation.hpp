@@ -292,6 +292,27 @@ RobustPlaneSegmentation<PointT, NormalT>::setSmallPlaneSeeding (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
+{
+  params_.coplanar_merge = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
+{
+  params_.min_curvature_share = enable ? pcl::rspd::DetectorParameters ().min_curvature_share : 2.0;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setFinalAssignment (pcl::rspd::FinalAssignment mode)
+{
+  params_.final_assignment = mode;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setNormalScale (pcl::rspd::NormalScale scale)
 {
   normal_scale_ = scale;
