@@ -26,7 +26,7 @@ namespace
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off]"
-    " [--curved-check on|off] [--assign edges|all|none] [--threads N] [-v]";
+    " [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -46,6 +46,8 @@ const char* const kHelp =
     "                   default); ignored when the input has normals\n"
     "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
+    "  --outlier-seeds drop|keep  drop split seeds whose MND is an outlier among all seeds\n"
+    "                   (default drop; keep = the paper)\n"
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends past their MND (default on; off = paper)\n"
     "  --assign M       once growth is stable, give points growth left out to a neighbouring plane\n"
@@ -71,6 +73,7 @@ struct Options
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
   bool coplanar_merge = true;
   bool curved_check = true;
+  bool drop_outlier_seeds = true;
   pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Edges;
   bool verbose = false;
   bool help = false;
@@ -190,6 +193,13 @@ parseArguments (int argc, char** argv)
       if (v != "on" && v != "off")
         throw UsageError{"--coplanar-merge needs 'on' or 'off' (got '" + v + "')"};
       o.coplanar_merge = v == "on";
+    }
+    else if (arg == "--outlier-seeds")
+    {
+      const std::string v = value ();
+      if (v != "drop" && v != "keep")
+        throw UsageError{"--outlier-seeds needs 'drop' or 'keep' (got '" + v + "')"};
+      o.drop_outlier_seeds = v == "drop";
     }
     else if (arg == "--curved-check")
     {
@@ -334,6 +344,7 @@ run (const Options& o)
   seg.setNormalScale (o.normal_scale);
   seg.setCoplanarMerge (o.coplanar_merge);
   seg.setCurvedPlaneCheck (o.curved_check);
+  seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setFinalAssignment (o.assignment);
   if (o.threads > 0)
     seg.setNumberOfThreads (static_cast<unsigned int> (o.threads));

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <unordered_set>
 
 namespace pcl
 {
@@ -126,7 +127,8 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
   if (num_patches < 2)
     return 0;
   UnionFind sets (num_patches);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs; // M1-M3 met (rules.coplanar only)
+  // Pairs meeting M1-M3 (rules.coplanar only), each once: one boundary has many edges.
+  std::unordered_set<std::uint64_t> pair_keys;
   // Every directed edge is visited once, which covers "an edge in either direction" (M1).
   for (std::size_t i = 0; i < graph.size (); ++i)
   {
@@ -147,7 +149,7 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
           pa.isInlier (points.points[n], points.normals[n]))
       {
         if (rules.coplanar)
-          pairs.emplace_back (std::min (a, b), std::max (a, b));
+          pair_keys.insert ((static_cast<std::uint64_t> (std::min (a, b)) << 32) | std::max (a, b));
         else
           sets.unite (a, b);
       }
@@ -156,7 +158,13 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
       (*flags)[i] |= kInterior | kSaturated;
   }
   if (rules.coplanar)
-    uniteCoplanarGroups (points, patches, pairs, rules.max_outlier_ratio, sets);
+  {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    pairs.reserve (pair_keys.size ());
+    for (const auto key : pair_keys)
+      pairs.emplace_back (static_cast<std::uint32_t> (key >> 32), static_cast<std::uint32_t> (key & 0xffffffffu));
+    uniteCoplanarGroups (points, patches, pairs, rules.max_outlier_ratio, sets); // sorts them first
+  }
 
   // Representative of each group: the largest patch, ties by lowest member index.
   std::vector<std::uint32_t> representative (num_patches, kNoPatch);

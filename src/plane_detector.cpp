@@ -231,6 +231,27 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
   return dropped;
 }
 
+/** Drop the seeds whose MND is an outlier among all seeds of the split (departure, see
+  * DetectorParameters::drop_outlier_seeds): log MND above median + α·MAD of the seeds' log MND.
+  * \return seeds dropped */
+std::size_t
+dropOutlierSeeds (const DetectorParameters& params, std::vector<PlanarPatch>& seeds)
+{
+  // Log scale: normal noise differs by factors across a scene (near and far, smooth and rough),
+  // and a factor is what the robust spread should be measured in.
+  std::vector<double> logs;
+  logs.reserve (seeds.size ());
+  for (const auto& p : seeds)
+    logs.push_back (std::log (std::max (p.mnd, 1e-12)));
+  const RobustSpread spread = robustSpreadInPlace (logs);
+  const double limit = spread.median + params.alpha * spread.mad;
+  const std::size_t before = seeds.size ();
+  seeds.erase (std::remove_if (seeds.begin (), seeds.end (),
+                               [&] (const PlanarPatch& p) { return std::log (std::max (p.mnd, 1e-12)) > limit; }),
+               seeds.end ());
+  return before - seeds.size ();
+}
+
 /** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
 void
 growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
@@ -280,6 +301,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   // Split (Sec. 3.1).
   std::vector<PlanarPatch> patches = splitPhase (points, params, &st);
   std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
+  if (params.drop_outlier_seeds && patches.size () >= 3)
+  {
+    st.outlier_seeds = dropOutlierSeeds (params, patches);
+    labels = labelSamples (points.size (), patches);
+  }
   const auto t1 = Clock::now ();
   st.split_seconds = std::chrono::duration<double> (t1 - t0).count ();
 

@@ -55,6 +55,12 @@ struct DetectorParameters
     * is no larger than the largest MND of the planes already found, grow-merge again, and drop every
     * plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a neighbour. */
   std::size_t small_cell_size = 0;
+  /** \brief Departure (outlier seeds): after the split, a seed whose MND is an outlier among all
+    * seeds (log MND above median + α·MAD of the seeds' log MND) is dropped before growth. A coarse
+    * cell can pass T1-T3 when its extent dwarfs a thick mix of surfaces (a rotated facade: a cell
+    * several metres wide holding wall, recessed windows and outliers, MND 51° where seeds have 15°);
+    * grown and merged, such a seed turns the scene into one plane. false = the paper. */
+  bool drop_outlier_seeds = true;
   /** \brief Departure (M4, coplanar groups): two groups merge only if at least (1 - T3 ratio) of the
     * samples of the group whose representative is smaller lie within the larger representative's
     * plane (the plane the merged group keeps) by the wider of the two representatives' MDP. Pairs
@@ -98,6 +104,7 @@ struct DetectorStatistics
 {
   std::size_t cells_tested = 0;      ///< planarity tests run during the split
   std::size_t seed_patches = 0;      ///< patches the split produced
+  std::size_t outlier_seeds = 0;     ///< seeds dropped as MND outliers
   int iterations = 0;                ///< grow-merge iterations
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
   std::size_t merges = 0;            ///< patches absorbed by merging

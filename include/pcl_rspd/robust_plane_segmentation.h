@@ -251,6 +251,14 @@ public:
   bool
   getCoplanarMerge () const { return params_.coplanar_merge; }
 
+  /** \brief Drop seeds whose MND is an outlier among the split's seeds (default on; off = the
+    * paper). See pcl::rspd::DetectorParameters::drop_outlier_seeds. */
+  void
+  setDropOutlierSeeds (bool enable);
+  /** \brief Whether outlier seeds are dropped. */
+  bool
+  getDropOutlierSeeds () const { return params_.drop_outlier_seeds; }
+
   /** \brief Curved-surface check (default on; off = the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the
     * surface normal by more than the plane's MND between its middle and its rim (a facet of a pipe,

@@ -299,6 +299,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setDropOutlierSeeds (bool enable)
+{
+  params_.drop_outlier_seeds = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 {
   params_.min_curvature_share = enable ? pcl::rspd::DetectorParameters ().min_curvature_share : 2.0;
