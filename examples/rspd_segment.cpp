@@ -49,7 +49,7 @@ const char* const kHelp =
     "  --outlier-seeds drop|keep  drop split seeds whose MND is an outlier among all seeds\n"
     "                   (default drop; keep = the paper)\n"
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
-    "                   a quarter of their residual and bends past their MND (default on; off = paper)\n"
+    "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
     "  --assign M       once growth is stable, give points growth left out to a neighbouring plane\n"
     "                   by distance alone: next to two or more planes ('edges', the default),\n"
     "                   next to any ('all'), or none ('none', the paper)\n"
@@ -72,7 +72,7 @@ struct Options
   int threads = 0;  // 0: leave OpenMP's default
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
   bool coplanar_merge = true;
-  bool curved_check = true;
+  bool curved_check = false;
   bool drop_outlier_seeds = true;
   pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Edges;
   bool verbose = false;

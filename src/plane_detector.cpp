@@ -345,7 +345,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     }
   }
 
-  if (params.min_curvature_share <= 1.0)
+  if (params.curved_plane_check)
     st.curved_planes = dropCurvedPlanes (points, params, patches);
 
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <fstream>
 #include <sys/stat.h>
 
@@ -27,11 +29,14 @@ struct Detection
 Detection
 detect (const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<std::uint32_t>& truth,
         const std::vector<pcl::rspd::SurfaceKind>* kinds = nullptr, bool small_plane_seeding = true,
-        pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic)
+        pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic,
+        const std::function<void (pcl::RobustPlaneSegmentation<pcl::PointXYZ>&)>& configure = {})
 {
   pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
   seg.setSmallPlaneSeeding (small_plane_seeding);
   seg.setNormalScale (normal_scale);
+  if (configure)
+    configure (seg);
   seg.setInputCloud (std::make_shared<pcl::PointCloud<pcl::PointXYZ>> (cloud));
   pcl::PointCloud<pcl::Label> labels;
   seg.getLabels (labels);
@@ -58,13 +63,14 @@ detect (const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<std::uint
 
 Detection
 detectScene (const std::string& name, const pcl::rspd::SceneOptions& options = {}, bool small_plane_seeding = true,
-             pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic)
+             pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic,
+             const std::function<void (pcl::RobustPlaneSegmentation<pcl::PointXYZ>&)>& configure = {})
 {
   const pcl::rspd::Scene scene = pcl::rspd::makeScene (name, options);
   const char* scale = normal_scale == pcl::rspd::NormalScale::Automatic
       ? "" : (normal_scale == pcl::rspd::NormalScale::Adaptive ? ", adaptive normal scale" : ", fixed (paper's) normal scale");
   std::printf ("    %s: %zu points, %d planes%s\n", name.c_str (), scene.cloud.size (), scene.num_planes, scale);
-  return detect (scene.cloud, scene.labels, &scene.kinds, small_plane_seeding, normal_scale);
+  return detect (scene.cloud, scene.labels, &scene.kinds, small_plane_seeding, normal_scale, configure);
 }
 
 bool
@@ -184,6 +190,25 @@ TEST (Scenario, IndustrialPipesAndTanksReported)
   EXPECT_EQ (r.score.false_planes, 0);
   EXPECT_GE (r.score.f1, 0.99);
   EXPECT_LE (r.curved_claimed, 0.02);
+}
+
+TEST (Scenario, CurvedSurfacesNeedOneOfTheTwoGuards)
+{
+  // Pipes and tanks: with neither outlier seeds dropped nor the curved-surface check, their facets
+  // become planes; either guard alone keeps them out (outlier seeds is the default).
+  const auto both_off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setDropOutlierSeeds (false); };
+  const auto check_only = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    s.setDropOutlierSeeds (false);
+    s.setCurvedPlaneCheck (true);
+    EXPECT_TRUE (s.getCurvedPlaneCheck ());
+  };
+  const Detection none = detectScene ("industrial", {}, true, pcl::rspd::NormalScale::Automatic, both_off);
+  const Detection check = detectScene ("industrial", {}, true, pcl::rspd::NormalScale::Automatic, check_only);
+  EXPECT_GT (none.curved_claimed, 0.3);
+  EXPECT_GE (none.score.false_planes, 10);
+  EXPECT_LE (check.curved_claimed, 0.02);
+  EXPECT_EQ (check.score.false_planes, 0);
+  EXPECT_GE (check.score.f1, 0.99);
 }
 
 TEST (Scenario, RotatedFacadeKeepsItsPlanes)

@@ -79,7 +79,15 @@ struct RobustPlane
   *    Once grow-merge is stable, the samples no plane holds are split again with cells down to k + 1
   *    samples; a new seed is kept only if its MND is at most the median MND of the planes found (the
   *    scene's own noise level; edge bands of bent normals are noisier and would bridge faces through
-  *    M2), grow-merge runs again, and planes still smaller than ε are dropped.
+  *    M2), grow-merge runs again, and planes still smaller than ε are dropped;
+  *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
+  *    all seeds of the split (log scale, median + α·MAD) is dropped before growth;
+  *  - coplanar groups, M4 (setCoplanarMerge(false) for the paper): groups join largest first and
+  *    only when most of the smaller one lies in the distance band of the plane the union keeps, so
+  *    facets of a faceted or curved object do not chain into one plane;
+  *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
+  *    or more planes join the one whose MDP band holds them (edge bands of bent normals);
+  *  - a curved-surface check is available, off by default (setCurvedPlaneCheck(true)).
   *
   * Without setInputNormals, normals are estimated by PCA over the same k-neighbourhoods that form
   * the growth graph. Where noise along the normal is as large as such a neighbourhood (a million
@@ -259,7 +267,7 @@ public:
   bool
   getDropOutlierSeeds () const { return params_.drop_outlier_seeds; }
 
-  /** \brief Curved-surface check (default on; off = the paper): a plane is dropped when a quadric
+  /** \brief Curved-surface check (default off, as the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the
     * surface normal by more than the plane's MND between its middle and its rim (a facet of a pipe,
     * tank, pillar or ball). See pcl::rspd::DetectorParameters::min_curvature_share. */
@@ -267,7 +275,7 @@ public:
   setCurvedPlaneCheck (bool enable);
   /** \brief Whether curved-surface facets are dropped. */
   bool
-  getCurvedPlaneCheck () const { return params_.min_curvature_share <= 1.0; }
+  getCurvedPlaneCheck () const { return params_.curved_plane_check; }
 
   /** \brief Last assignment pass once grow-merge is stable (default Edges; None = the paper): samples
     * growth left out join a neighbouring plane by distance alone. See

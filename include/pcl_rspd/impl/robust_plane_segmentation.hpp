@@ -308,7 +308,7 @@ RobustPlaneSegmentation<PointT, NormalT>::setDropOutlierSeeds (bool enable)
 template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 {
-  params_.min_curvature_share = enable ? pcl::rspd::DetectorParameters ().min_curvature_share : 2.0;
+  params_.curved_plane_check = enable;
   invalidate ();
 }
 
