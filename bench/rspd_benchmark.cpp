@@ -22,6 +22,7 @@
 
 #include "child_process.h"
 #include "cloud_io.h"
+#include "command_line.h"
 
 #include <pcl_rspd/robust_plane_segmentation.h>
 #include <pcl_rspd/synthetic_scenes.h>
@@ -54,6 +55,16 @@
 
 namespace
 {
+using rspd_tools::OptionArgument;
+using rspd_tools::UsageError;
+
+/** \brief Parse the whole string as an integer in [lo, hi]. */
+bool
+parseInteger (const std::string& s, long long lo, long long hi, long long& value)
+{
+  return rspd_tools::parseInteger (s, lo, hi, value);
+}
+
 const char* const kUsage =
     "usage: rspd_benchmark [--scenes LIST] [--sizes LIST] [--repeats N] [--threads N] [--methods rspd,rg]\n"
     "                      [--markdown] [--tmpdir DIR] [--keep]\n"
@@ -96,12 +107,6 @@ const char* const kHelp =
     "Exit status: 0 all runs finished, 1 a run failed or outputs differ across thread counts,\n"
     "2 usage error.\n";
 
-/** \brief A usage error: message for stderr, exit status 2. */
-struct UsageError
-{
-  std::string message;
-};
-
 /** \brief One scene at one size. */
 struct Job
 {
@@ -141,15 +146,6 @@ splitList (const std::string& text)
   return items;
 }
 
-/** \brief Parse a whole string as an integer in [lo, hi]. */
-bool
-parseInteger (const std::string& s, long long lo, long long hi, long long& value)
-{
-  const char* end = s.data () + s.size ();
-  const auto r = std::from_chars (s.data (), end, value);
-  return !s.empty () && r.ec == std::errc () && r.ptr == end && value >= lo && value <= hi;
-}
-
 /** \brief Parse a point count: "300000", "300k" or "1M". */
 bool
 parseSize (std::string s, std::size_t& size)
@@ -186,26 +182,11 @@ parseArguments (int argc, char** argv)
   std::vector<std::size_t> sizes;
   for (int i = 1; i < argc; ++i)
   {
-    std::string arg = argv[i];
-    // --name=value is accepted as well as --name value.
-    std::string inline_value;
-    bool has_inline = false;
-    if (arg.compare (0, 2, "--") == 0 && arg.find ('=') != std::string::npos)
-    {
-      inline_value = arg.substr (arg.find ('=') + 1);
-      arg = arg.substr (0, arg.find ('='));
-      has_inline = true;
-    }
-    const auto value = [&] () -> std::string {
-      if (has_inline)
-        return inline_value;
-      if (i + 1 >= argc)
-        throw UsageError{"option " + arg + " needs a value"};
-      return argv[++i];
-    };
-    const auto flag = [&] () {
-      if (has_inline)
-        throw UsageError{"option " + arg + " takes no value"};
+    OptionArgument option (argc, argv, i);
+    const std::string& arg = option.name ();
+    const auto value = [&] { return option.value (); };
+    const auto flag = [&] {
+      option.noValue ();
       return true;
     };
     long long number = 0;

@@ -19,6 +19,7 @@
 
 #include "child_process.h"
 #include "cloud_io.h"
+#include "command_line.h"
 #include "label_io.h"
 
 #include <pcl_rspd/plane_evaluation.h>
@@ -56,6 +57,16 @@
 
 namespace
 {
+using rspd_tools::OptionArgument;
+using rspd_tools::UsageError;
+
+/** \brief Parse the whole string as an integer in [lo, hi]. */
+bool
+parseInteger (const std::string& s, long long lo, long long hi, long long& value)
+{
+  return rspd_tools::parseInteger (s, lo, hi, value);
+}
+
 const char* const kUsage =
     "usage: rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--methods rspd,sac,rg] [--json]\n"
     "       rspd_compare --scene NAME [-n N] [--seed S] [options]";
@@ -99,21 +110,6 @@ struct Options
   bool help = false;
 };
 
-/** \brief A usage error: message for stderr, exit status 2. */
-struct UsageError
-{
-  std::string message;
-};
-
-/** \brief Parse a whole string as an integer in [lo, hi]. */
-bool
-parseInteger (const std::string& s, long long lo, long long hi, long long& value)
-{
-  const char* end = s.data () + s.size ();
-  const auto r = std::from_chars (s.data (), end, value);
-  return !s.empty () && r.ec == std::errc () && r.ptr == end && value >= lo && value <= hi;
-}
-
 Options
 parseArguments (int argc, char** argv)
 {
@@ -133,26 +129,10 @@ parseArguments (int argc, char** argv)
       positional_only = true;
       continue;
     }
-    // --name=value is accepted as well as --name value.
-    std::string inline_value;
-    bool has_inline = false;
-    if (arg.compare (0, 2, "--") == 0 && arg.find ('=') != std::string::npos)
-    {
-      inline_value = arg.substr (arg.find ('=') + 1);
-      arg = arg.substr (0, arg.find ('='));
-      has_inline = true;
-    }
-    const auto value = [&] () -> std::string {
-      if (has_inline)
-        return inline_value;
-      if (i + 1 >= argc)
-        throw UsageError{"option " + arg + " needs a value"};
-      return argv[++i];
-    };
-    const auto no_value = [&] () {
-      if (has_inline)
-        throw UsageError{"option " + arg + " takes no value"};
-    };
+    OptionArgument option (argc, argv, i);
+    arg = option.name ();
+    const auto value = [&] { return option.value (); };
+    const auto no_value = [&] { option.noValue (); };
     long long number = 0;
     if (arg == "-h" || arg == "--help")
     {

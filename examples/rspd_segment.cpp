@@ -4,6 +4,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "cloud_io.h"
+#include "command_line.h"
 #include "render_png.h"
 
 #include <pcl_rspd/robust_plane_segmentation.h>
@@ -23,6 +24,10 @@
 
 namespace
 {
+using rspd_tools::OptionArgument;
+using rspd_tools::parseInteger;
+using rspd_tools::UsageError;
+
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off]"
@@ -79,21 +84,6 @@ struct Options
   bool help = false;
 };
 
-/** \brief A usage error: message for stderr, exit status 2. */
-struct UsageError
-{
-  std::string message;
-};
-
-/** \brief Strict decimal integer: the whole string, no overflow. */
-bool
-parseInt (const std::string& s, int& value)
-{
-  const char* end = s.data () + s.size ();
-  const auto r = std::from_chars (s.data (), end, value);
-  return !s.empty () && r.ec == std::errc () && r.ptr == end;
-}
-
 /** \brief Parse the command line. \throws UsageError */
 Options
 parseArguments (int argc, char** argv)
@@ -115,30 +105,10 @@ parseArguments (int argc, char** argv)
       positional_only = true;
       continue;
     }
-    // --name=value is accepted as well as --name value.
-    std::string inline_value;
-    bool has_inline = false;
-    if (arg.compare (0, 2, "--") == 0)
-    {
-      const std::size_t eq = arg.find ('=');
-      if (eq != std::string::npos)
-      {
-        inline_value = arg.substr (eq + 1);
-        arg = arg.substr (0, eq);
-        has_inline = true;
-      }
-    }
-    const auto value = [&] () -> std::string {
-      if (has_inline)
-        return inline_value;
-      if (i + 1 >= argc)
-        throw UsageError{"option " + arg + " needs a value"};
-      return argv[++i];
-    };
-    const auto no_value = [&] () {
-      if (has_inline)
-        throw UsageError{"option " + arg + " takes no value"};
-    };
+    OptionArgument option (argc, argv, i);
+    arg = option.name ();
+    const auto value = [&] { return option.value (); };
+    const auto no_value = [&] { option.noValue (); };
     if (arg == "-h" || arg == "--help")
     {
       no_value ();
@@ -164,15 +134,14 @@ parseArguments (int argc, char** argv)
     {
       const std::string v = value ();
       const std::size_t x = v.find ('x');
-      if (x == std::string::npos || !parseInt (v.substr (0, x), o.png_width) ||
-          !parseInt (v.substr (x + 1), o.png_height) || o.png_width < 16 || o.png_height < 16 ||
-          o.png_width > 16384 || o.png_height > 16384)
+      if (x == std::string::npos || !parseInteger (v.substr (0, x), 16, 16384, o.png_width) ||
+          !parseInteger (v.substr (x + 1), 16, 16384, o.png_height))
         throw UsageError{"--png-size needs WIDTHxHEIGHT, each 16..16384 (got '" + v + "')"};
     }
     else if (arg == "-k" || arg == "--neighbours" || arg == "--neighbors")
     {
       const std::string v = value ();
-      if (!parseInt (v, o.k) || o.k < 3 || o.k > 1000)
+      if (!parseInteger (v, 3, 1000, o.k))
         throw UsageError{"-k needs an integer from 3 to 1000 (got '" + v + "')"};
     }
     else if (arg == "--normal-scale")
@@ -188,26 +157,11 @@ parseArguments (int argc, char** argv)
         throw UsageError{"--normal-scale needs 'fixed', 'adaptive' or 'auto' (got '" + v + "')"};
     }
     else if (arg == "--coplanar-merge")
-    {
-      const std::string v = value ();
-      if (v != "on" && v != "off")
-        throw UsageError{"--coplanar-merge needs 'on' or 'off' (got '" + v + "')"};
-      o.coplanar_merge = v == "on";
-    }
+      o.coplanar_merge = option.choice ("on", "off");
     else if (arg == "--outlier-seeds")
-    {
-      const std::string v = value ();
-      if (v != "drop" && v != "keep")
-        throw UsageError{"--outlier-seeds needs 'drop' or 'keep' (got '" + v + "')"};
-      o.drop_outlier_seeds = v == "drop";
-    }
+      o.drop_outlier_seeds = option.choice ("drop", "keep");
     else if (arg == "--curved-check")
-    {
-      const std::string v = value ();
-      if (v != "on" && v != "off")
-        throw UsageError{"--curved-check needs 'on' or 'off' (got '" + v + "')"};
-      o.curved_check = v == "on";
-    }
+      o.curved_check = option.choice ("on", "off");
     else if (arg == "--assign")
     {
       const std::string v = value ();
@@ -223,7 +177,7 @@ parseArguments (int argc, char** argv)
     else if (arg == "--threads" || arg == "-t")
     {
       const std::string v = value ();
-      if (!parseInt (v, o.threads) || o.threads < 1 || o.threads > 1024)
+      if (!parseInteger (v, 1, 1024, o.threads))
         throw UsageError{"--threads needs an integer from 1 to 1024 (got '" + v + "')"};
     }
     else

@@ -53,7 +53,8 @@ normalsCompatible (const PlanarPatch& a, const PlanarPatch& b)
 
 namespace
 {
-/** M4 applied to the candidate pairs (M1-M3 met) in a fixed order, see mergePatches. */
+/** M4 applied to the candidate pairs (M1-M3 met, each pair once, in any order) in a fixed order of
+  * their own, see mergePatches. */
 void
 uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& patches,
                      std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, double max_outlier_ratio,
@@ -64,8 +65,6 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
       return patches[p].members.size () > patches[q].members.size ();
     return patches[p].first_index < patches[q].first_index;
   };
-  std::sort (pairs.begin (), pairs.end ());
-  pairs.erase (std::unique (pairs.begin (), pairs.end ()), pairs.end ());
   // Each pair as (larger, smaller); the pair with the larger first patch first, then the larger second.
   for (auto& pr : pairs)
     if (larger (pr.second, pr.first))
@@ -163,7 +162,7 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
     pairs.reserve (pair_keys.size ());
     for (const auto key : pair_keys)
       pairs.emplace_back (static_cast<std::uint32_t> (key >> 32), static_cast<std::uint32_t> (key & 0xffffffffu));
-    uniteCoplanarGroups (points, patches, pairs, rules.max_outlier_ratio, sets); // sorts them first
+    uniteCoplanarGroups (points, patches, pairs, rules.max_outlier_ratio, sets);
   }
 
   // Representative of each group: the largest patch, ties by lowest member index.

@@ -112,8 +112,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
     {
       if (choice[j] == kNoPatch)
       {
-        left[kept] = left[j];
-        choice[kept++] = kNoPatch;
+        left[kept++] = left[j];
         continue;
       }
       labels[left[j]] = choice[j];
@@ -209,7 +208,7 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
     const PlaneCurvature c = measureCurvature (points, patches[p].members);
     // Curved: the bend explains a good share of the residual and accounts for at least half of the
     // patch's normal tolerance (a facet of a curved surface grows until its rim normals reach MND,
-    // so its half-bend is about 2/3 of MND; a scanned wall bends by a small part of it). A quadric
+    // so its half-bend is a large part of MND; a scanned wall bends by a small part of it). A quadric
     // that leaves no residual at all was not determined by the samples (a few scan lines, which six
     // coefficients interpolate), so such a patch is not judged.
     curved[p] = c.share >= params.min_curvature_share && c.share <= 0.999 && c.half_bend >= 0.5 * patches[p].mnd;
@@ -258,6 +257,9 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
                       std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels,
                       std::vector<std::uint8_t>& flags, DetectorStatistics& st)
 {
+  MergeRules rules;
+  rules.coplanar = params.coplanar_merge;
+  rules.max_outlier_ratio = params.max_outlier_ratio;
   for (;;)
   {
     if (st.iterations >= params.max_iterations)
@@ -269,9 +271,6 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
     }
     ++st.iterations;
     growPatches (points, graph, patches, labels, &flags);
-    MergeRules rules;
-    rules.coplanar = params.coplanar_merge;
-    rules.max_outlier_ratio = params.max_outlier_ratio;
     st.merges += mergePatches (points, graph, patches, labels, &flags, rules);
     const std::size_t updated = reestimateGrownPatches (points, params, patches);
     st.reestimations += updated;

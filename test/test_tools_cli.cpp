@@ -141,3 +141,29 @@ TEST (SegmentCli, NormalScaleOption)
   EXPECT_EQ (runTool (segment, {dir.file ("c.pcd"), "--normal-scale", "wide"}).status, 2);
   EXPECT_EQ (runTool (segment, {dir.file ("c.pcd"), "--normal-scale"}).status, 2);
 }
+
+TEST (SegmentCli, DepartureSwitches)
+{
+  // Each of issue 6's switches is honoured (the paper's side changes the labels of a room, or of
+  // industrial clutter for the curved-surface check) and takes both spellings.
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (segment, "rspd_segment");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"room", dir.file ("r"), "-n", "60000"}).status, 0);
+  ASSERT_EQ (runTool (make, {"industrial", dir.file ("i"), "-n", "60000"}).status, 0);
+  const auto labels = [&] (const std::string& cloud, const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args{dir.file (cloud), "-o", dir.file (out)};
+    args.insert (args.end (), extra.begin (), extra.end ());
+    const auto r = runTool (segment, args);
+    EXPECT_EQ (r.status, 0) << r.err;
+    return rspd_test::fileText (dir.file (out));
+  };
+  const std::string room = labels ("r.pcd", "room.pcd", {});
+  EXPECT_TRUE (room == labels ("r.pcd", "room_on.pcd", {"--coplanar-merge=on", "--outlier-seeds", "drop", "--assign", "edges", "--curved-check", "off"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_m4.pcd", {"--coplanar-merge", "off"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_assign.pcd", {"--assign=none"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_all.pcd", {"--assign", "all"}));
+  const std::string industrial = labels ("i.pcd", "ind.pcd", {"--outlier-seeds", "keep"});
+  EXPECT_FALSE (industrial == labels ("i.pcd", "ind_curved.pcd", {"--outlier-seeds", "keep", "--curved-check", "on"}));
+  EXPECT_FALSE (industrial == labels ("i.pcd", "ind_seeds.pcd", {}));
+}
