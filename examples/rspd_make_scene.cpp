@@ -2,16 +2,21 @@
 /*
  * rspd_make_scene: write a synthetic scene (pcl_rspd/synthetic_scenes.h) as a binary PCD cloud
  * plus a ground-truth file of raw little-endian uint32 labels, one per point in cloud order
- * (0 = no plane, 1..K = plane).
+ * (0 = no plane, 1..K = plane). Given a .pcd or .ply file instead of a scene name, it moves that
+ * cloud's points as it would move a scene (--rotate, --scale, --offset) and writes OUT_PREFIX.pcd
+ * alone: the file's own truth still applies, point for point.
  *
  * Exit status: 0 success, 1 a file could not be written, 2 usage error.
  */
 
 #include <pcl_rspd/synthetic_scenes.h>
 
+#include "cloud_io.h"
+
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -30,7 +35,24 @@ namespace
 {
 const char* const kUsage =
   "usage: rspd_make_scene NAME OUT_PREFIX [-n N] [--noise S] [--outliers R] [--rotate]"
-  " [--scale F] [--offset X Y Z] [--seed S] [--no-shuffle] | rspd_make_scene --list";
+  " [--scale F] [--offset X Y Z] [--seed S] [--no-shuffle] | rspd_make_scene --list\n"
+  "       rspd_make_scene CLOUD.pcd|CLOUD.ply OUT_PREFIX [--rotate] [--scale F] [--offset X Y Z] [--seed S]";
+
+/** \brief Whether a scene name is a cloud file to move rather than a scene to generate. */
+bool
+isCloudFile (const std::string& name)
+{
+  const auto ends = [&] (const char* ext) {
+    const std::size_t n = std::strlen (ext);
+    if (name.size () < n)
+      return false;
+    for (std::size_t i = 0; i < n; ++i)
+      if (std::tolower (static_cast<unsigned char> (name[name.size () - n + i])) != ext[i])
+        return false;
+    return true;
+  };
+  return ends (".pcd") || ends (".ply");
+}
 
 /** \brief Thrown for a malformed command line; main prints it with the usage line. */
 struct UsageError : std::runtime_error
@@ -174,6 +196,48 @@ main (int argc, char** argv)
 
   const std::string& name = positional[0];
   const std::string& prefix = positional[1];
+  if (isCloudFile (name))
+  {
+    if (options.num_points != 0 || options.noise >= 0.0 || options.outlier_ratio >= 0.0 || !options.shuffle)
+    {
+      std::fprintf (stderr, "rspd_make_scene: -n, --noise, --outliers and --no-shuffle apply to generated "
+                    "scenes, not to '%s'\n%s\n", name.c_str (), kUsage);
+      return 2;
+    }
+    pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
+    rspd_tools::LoadedCloud loaded;
+    std::string error;
+    if (!rspd_tools::loadCloud (name, loaded, error))
+    {
+      std::fprintf (stderr, "rspd_make_scene: %s\n", error.c_str ());
+      return 1;
+    }
+    pcl::PointCloud<pcl::PointXYZ> cloud = *loaded.xyz;
+    pcl::rspd::transformCloud (cloud, options);
+    const std::string pcd_path = prefix + ".pcd";
+    const std::string pcd_tmp = tempName (pcd_path);
+    errno = 0;
+    int status = -1;
+    try
+    {
+      status = pcl::io::savePCDFileBinary (pcd_tmp, cloud);
+    }
+    catch (const std::exception&)
+    {
+      status = -1;
+    }
+    if (status < 0 || std::rename (pcd_tmp.c_str (), pcd_path.c_str ()) != 0)
+    {
+      const int err = errno;
+      std::remove (pcd_tmp.c_str ());
+      std::fprintf (stderr, "rspd_make_scene: cannot write '%s'%s%s\n", pcd_path.c_str (), err != 0 ? ": " : "",
+                    err != 0 ? std::strerror (err) : "");
+      return 1;
+    }
+    std::printf ("%s: %zu points moved -> %s (the input's truth applies, same point order)\n", name.c_str (),
+                 cloud.size (), pcd_path.c_str ());
+    return 0;
+  }
   pcl::rspd::Scene scene;
   try
   {

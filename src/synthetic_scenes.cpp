@@ -830,5 +830,33 @@ makeScene (const std::string& name, const SceneOptions& options)
   return scene;
 }
 
+void
+transformCloud (pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneOptions& options)
+{
+  if (!(options.scale > 0.0) || !std::isfinite (options.scale))
+    throw std::invalid_argument ("scene scale must be positive and finite");
+  if (!options.offset.allFinite ())
+    throw std::invalid_argument ("scene offset must be finite");
+  // The same draw as makeScene's for this seed.
+  SceneRandom rotation_rng (options.seed ^ 0x9e3779b9u);
+  const Eigen::Matrix3d rotation = options.random_rotation ? randomRotation (rotation_rng)
+                                                           : Eigen::Matrix3d::Identity ();
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant (HUGE_VAL), hi = -lo;
+  for (const auto& p : cloud)
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
+    {
+      lo = lo.cwiseMin (p.getVector3fMap ().cast<double> ());
+      hi = hi.cwiseMax (p.getVector3fMap ().cast<double> ());
+    }
+  const Eigen::Vector3d centre = lo.allFinite () ? Eigen::Vector3d (0.5 * (lo + hi)) : Eigen::Vector3d::Zero ();
+  const auto move = [&] (const Eigen::Vector3d& p) -> Eigen::Vector3d {
+    return options.scale * (rotation * (p - centre) + centre) + options.offset;
+  };
+  for (auto& p : cloud)
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
+      p.getVector3fMap () = move (p.getVector3fMap ().cast<double> ()).cast<float> ();
+  cloud.sensor_origin_.head<3> () = move (cloud.sensor_origin_.head<3> ().cast<double> ()).cast<float> ();
+}
+
 } // namespace rspd
 } // namespace pcl

@@ -455,12 +455,14 @@ TEST (RobustPlaneSegmentation, ScaleOffsetAndRotationDoNotChangeThePlanes)
   seg.setInputCloud (cloud);
   const auto base = labelsOf (seg);
   const Eigen::Matrix3f rot = (Eigen::AngleAxisf (0.7f, Eigen::Vector3f (1, 2, 3).normalized ())).toRotationMatrix ();
-  // Scale and offset change nothing (centring in double, data-scaled floors). Rotation moves the
-  // octree's axis-aligned cells, so seeds differ: the same planes, memberships nearly equal.
+  // The same planes whatever the units, position or orientation. Memberships agree but for a few
+  // edge samples: the corner's three faces tie for the dominant normal direction, so float rounding
+  // of the scaled normals can change the order of the frame's axes, hence the order the seeds are
+  // found in, and the face an ambiguous edge sample joins (0.993 for mm, 1.0 rotated).
   struct Variant { const char* name; float scale; Eigen::Vector3f offset; bool rotate; double min_agreement; };
-  for (const Variant& v : {Variant{"mm", 1000.0f, Eigen::Vector3f::Zero (), false, 0.995},
+  for (const Variant& v : {Variant{"mm", 1000.0f, Eigen::Vector3f::Zero (), false, 0.99},
                            Variant{"1 km away", 1.0f, Eigen::Vector3f (1000, -1000, 500), false, 0.99},
-                           Variant{"rotated", 1.0f, Eigen::Vector3f::Zero (), true, 0.9}})
+                           Variant{"rotated", 1.0f, Eigen::Vector3f::Zero (), true, 0.99}})
   {
     auto moved = std::make_shared<Cloud> ();
     for (const auto& p : *cloud)

@@ -224,6 +224,45 @@ TEST (Scenario, RotatedFacadeKeepsItsPlanes)
   EXPECT_NEAR (rotated.score.f1, base.score.f1, 0.02);
 }
 
+TEST (Scenario, TurnedSceneGivesTheSamePlanes)
+{
+  // In the dominant-plane frame (the default) the octree's cells and the medians of Eqs. 3-4 turn
+  // with the cloud, so three random rotations of the room and of the staircase label their points
+  // as the original does: scored against the original's truth and positions, F1 within 0.005.
+  // In the cloud's own axes (the paper), a rotated facade loses planes for some rotations.
+  for (const char* name : {"room", "staircase"})
+  {
+    const pcl::rspd::Scene scene = pcl::rspd::makeScene (name);
+    const Detection base = detect (scene.cloud, scene.labels);
+    for (std::uint32_t seed : {11u, 12u, 13u})
+    {
+      pcl::PointCloud<pcl::PointXYZ> turned = scene.cloud;
+      pcl::rspd::SceneOptions o;
+      o.random_rotation = true;
+      o.seed = seed;
+      pcl::rspd::transformCloud (turned, o);
+      const Detection run = detect (turned, scene.labels);
+      const pcl::rspd::EvaluationResult on_original =
+        pcl::rspd::evaluatePlaneDetection (scene.cloud, scene.labels, run.labels);
+      EXPECT_NEAR (on_original.f1, base.score.f1, 0.005) << name << ", rotation seed " << seed;
+      EXPECT_EQ (on_original.found, base.score.found) << name << ", rotation seed " << seed;
+    }
+  }
+  const pcl::rspd::Scene facade = pcl::rspd::makeScene ("facade");
+  pcl::PointCloud<pcl::PointXYZ> turned = facade.cloud;
+  pcl::rspd::SceneOptions o;
+  o.random_rotation = true;
+  o.seed = 3;
+  pcl::rspd::transformCloud (turned, o);
+  const auto axes = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    s.setDetectionFrame (pcl::rspd::DetectionFrame::InputAxes);
+  };
+  const Detection planes = detect (turned, facade.labels);
+  const Detection input_axes = detect (turned, facade.labels, nullptr, true, pcl::rspd::NormalScale::Automatic, axes);
+  EXPECT_EQ (planes.score.found, 16);
+  EXPECT_LT (input_axes.score.found, 16);
+}
+
 TEST (Scenario, ScaledAndShiftedSceneGivesTheSameScore)
 {
   const Detection base = detectScene ("facade");
@@ -258,9 +297,12 @@ TEST (SharedData, SynPebPc01)
     GTEST_SKIP () << "../shared/data not present";
   // Noisy (1 cm RMS), 60 mostly small planes: the paper's method finds 11 (the authors' code 10),
   // 16 with the small-plane pass; coplanar-group merging keeps facets of the faceted objects apart.
+  // Its planes follow no dominant frame, and the score depends on where the octree's cells fall:
+  // in the file's own axes 0.867 (43 found), over random rotations 0.65-0.88; in the dominant-plane
+  // frame 0.736 (39) whatever the rotation.
   const Detection r = detect (cloud, truth);
-  EXPECT_GE (r.score.found, 38);
-  EXPECT_GE (r.score.f1, 0.82);
+  EXPECT_GE (r.score.found, 36);
+  EXPECT_GE (r.score.f1, 0.70);
 }
 
 TEST (SharedData, CgalBuildingPseudoTruth)

@@ -4,6 +4,9 @@
  */
 #include "cli_helpers.h"
 
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
 #include <gtest/gtest.h>
 
 using rspd_test::runTool;
@@ -50,6 +53,34 @@ TEST (MakeSceneCli, ListsScenesAndRefusesBadUsage)
   const auto unwritable = runTool (tool, {"cube", "/nonexistent_dir/x", "-n", "100"});
   EXPECT_EQ (unwritable.status, 1);
   EXPECT_EQ (rspd_test::lineCount (unwritable.err), 1) << unwritable.err;
+}
+
+TEST (MakeSceneCli, MovesAGivenCloudKeepingItsShapeAndOrder)
+{
+  // A cloud file instead of a scene name: its points are turned, scaled and moved as a scene's
+  // would be, so a detection on it can be scored against the file's own truth.
+  REQUIRE_TOOL (tool, "rspd_make_scene");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (tool, {"room", dir.file ("r"), "-n", "3000"}).status, 0);
+  const auto r = runTool (tool, {dir.file ("r.pcd"), dir.file ("m"), "--rotate", "--seed", "5", "--scale", "2"});
+  ASSERT_EQ (r.status, 0) << r.err;
+  pcl::PointCloud<pcl::PointXYZ> a, b;
+  ASSERT_EQ (pcl::io::loadPCDFile (dir.file ("r.pcd"), a), 0);
+  ASSERT_EQ (pcl::io::loadPCDFile (dir.file ("m.pcd"), b), 0);
+  ASSERT_EQ (a.size (), b.size ());
+  bool moved = false;
+  for (std::size_t i = 1; i < a.size (); i += 97)
+  {
+    const float da = (a[i].getVector3fMap () - a[0].getVector3fMap ()).norm ();
+    const float db = (b[i].getVector3fMap () - b[0].getVector3fMap ()).norm ();
+    EXPECT_NEAR (db, 2.0f * da, 1e-4f * (1.0f + da)) << i;
+    moved = moved || (a[i].getVector3fMap () - b[i].getVector3fMap ()).norm () > 1e-3f;
+  }
+  EXPECT_TRUE (moved);
+  EXPECT_EQ (runTool (tool, {dir.file ("r.pcd"), dir.file ("n"), "-n", "100"}).status, 2);
+  const auto missing = runTool (tool, {dir.file ("none.pcd"), dir.file ("n"), "--rotate"});
+  EXPECT_EQ (missing.status, 1);
+  EXPECT_EQ (rspd_test::lineCount (missing.err), 1) << missing.err;
 }
 
 TEST (EvaluateCli, TruthAgainstItselfScoresOneAndJsonHasTheKeys)
@@ -166,4 +197,9 @@ TEST (SegmentCli, DepartureSwitches)
   const std::string industrial = labels ("i.pcd", "ind.pcd", {"--outlier-seeds", "keep"});
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_curved.pcd", {"--outlier-seeds", "keep", "--curved-check", "on"}));
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_seeds.pcd", {}));
+  // The detection frame: on a turned room the paper's axis-aligned cells give other labels.
+  ASSERT_EQ (runTool (make, {"room", dir.file ("t"), "-n", "60000", "--rotate"}).status, 0);
+  const std::string turned = labels ("t.pcd", "turned.pcd", {});
+  EXPECT_TRUE (turned == labels ("t.pcd", "turned_planes.pcd", {"--frame", "planes"}));
+  EXPECT_FALSE (turned == labels ("t.pcd", "turned_axes.pcd", {"--frame=axes"}));
 }

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_rspd/dominant_frame.h>
 #include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/plane_detector.h>
 
@@ -87,6 +88,10 @@ struct RobustPlane
   *    facets of a faceted or curved object do not chain into one plane;
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals);
+  *  - orientation (setDetectionFrame(InputAxes) for the paper): the octree cells and the
+  *    component-wise medians of Eqs. 3-4 follow the cloud's axes; the phases run instead in the frame
+  *    of the dominant normal directions (pcl::rspd::dominantFrame), so a rotated cloud gives the
+  *    same planes, and the cells of a scene not aligned with its axes hold one wall, not a slice of two;
   *  - a curved-surface check is available, off by default (setCurvedPlaneCheck(true)).
   *
   * Without setInputNormals, normals are estimated by PCA over the same k-neighbourhoods that form
@@ -259,6 +264,15 @@ public:
   bool
   getCoplanarMerge () const { return params_.coplanar_merge; }
 
+  /** \brief The axes the octree is cut along and the medians of Eqs. 3-4 are taken on (default
+    * pcl::rspd::DetectionFrame::DominantPlanes: those of the most common normal directions, so the
+    * planes found do not depend on how the cloud is rotated; InputAxes = the paper). */
+  void
+  setDetectionFrame (pcl::rspd::DetectionFrame frame);
+  /** \brief The axes the method works along. */
+  pcl::rspd::DetectionFrame
+  getDetectionFrame () const { return detection_frame_; }
+
   /** \brief Drop seeds whose MND is an outlier among the split's seeds (default on; off = the
     * paper). See pcl::rspd::DetectorParameters::drop_outlier_seeds. */
   void
@@ -428,6 +442,7 @@ protected:
   std::size_t min_patch_size_ = 0;
   bool small_plane_seeding_ = true;
   pcl::rspd::NormalScale normal_scale_ = pcl::rspd::NormalScale::Automatic;
+  pcl::rspd::DetectionFrame detection_frame_ = pcl::rspd::DetectionFrame::DominantPlanes;
   pcl::rspd::DetectorParameters params_;
 
   int model_type_;

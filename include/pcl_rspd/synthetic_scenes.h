@@ -76,5 +76,14 @@ sceneNames ();
 Scene
 makeScene (const std::string& name, const SceneOptions& options = SceneOptions ());
 
+/** \brief Move a given cloud as makeScene moves a generated one: the random rotation drawn from
+  * options.seed (about the centre of the finite points' bounding box) if options.random_rotation,
+  * then options.scale and options.offset. Point order is kept; non-finite points stay as they are;
+  * the sensor origin moves with the points. Used to check that detection does not depend on a
+  * cloud's orientation, units or position (the labels of the input still apply, point for point).
+  * \throws std::invalid_argument for a non-positive or non-finite scale or a non-finite offset. */
+void
+transformCloud (pcl::PointCloud<pcl::PointXYZ>& cloud, const SceneOptions& options);
+
 } // namespace rspd
 } // namespace pcl

@@ -299,6 +299,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setDetectionFrame (pcl::rspd::DetectionFrame frame)
+{
+  detection_frame_ = frame;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setDropOutlierSeeds (bool enable)
 {
   params_.drop_outlier_seeds = enable;
@@ -754,8 +761,23 @@ RobustPlaneSegmentation<PointT, NormalT>::compute ()
       graph_ = pcl::rspd::NeighborGraph ();
       return false;
     }
+    // Orientation independence (departure, setDetectionFrame): the phases run in the frame of
+    // the dominant normal directions, and the samples and planes are turned back afterwards.
+    const bool turn = detection_frame_ == pcl::rspd::DetectionFrame::DominantPlanes;
+    const Eigen::Matrix3d frame = turn ? pcl::rspd::dominantFrame (points_) : Eigen::Matrix3d::Identity ();
+    if (turn)
+      pcl::rspd::rotateSamples (points_, frame, params_.num_threads);
     std::vector<pcl::rspd::DetectedPatch> patches;
     pcl::rspd::detectPlanes (points_, graph_, params_, patches, &stats_);
+    if (turn)
+    {
+      pcl::rspd::rotateSamples (points_, frame.transpose (), params_.num_threads);
+      for (auto& patch : patches)
+      {
+        patch.center = frame.transpose () * patch.center;
+        patch.normal = (frame.transpose () * patch.normal).normalized ();
+      }
+    }
     const auto t1 = std::chrono::steady_clock::now ();
     buildPlanes (patches);
     stats_.output_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
@@ -763,6 +785,7 @@ RobustPlaneSegmentation<PointT, NormalT>::compute ()
   catch (const std::exception& e)
   {
     PCL_ERROR ("[pcl::%s::segment] %s\n", getClassName ().c_str (), e.what ());
+    points_ = pcl::rspd::PointSet (); // possibly still turned into the detection frame
     planes_.clear ();
     labels_.clear ();
     return false;
