@@ -5,6 +5,8 @@
 #include <pcl_rspd/patch_growth.h>
 #include <pcl_rspd/patch_merge.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -53,6 +55,42 @@ normalsCompatible (const PlanarPatch& a, const PlanarPatch& b)
 
 namespace
 {
+/** Sums of positions and their outer products: a least-squares plane that merges by addition. */
+struct Moments
+{
+  double n = 0.0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero ();
+
+  void
+  add (const Eigen::Vector3d& p)
+  {
+    n += 1.0;
+    sum += p;
+    outer += p * p.transpose ();
+  }
+
+  void
+  merge (const Moments& o)
+  {
+    n += o.n;
+    sum += o.sum;
+    outer += o.outer;
+  }
+
+  bool
+  plane (Eigen::Vector3d& center, Eigen::Vector3d& normal) const
+  {
+    if (n < 3.0)
+      return false;
+    center = sum / n;
+    const Eigen::Matrix3d cov = outer / n - center * center.transpose ();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig (cov);
+    normal = eig.eigenvectors ().col (0);
+    return normal.allFinite ();
+  }
+};
+
 /** M4 applied to the candidate pairs (M1-M3 met, each pair once, in any order) in a fixed order of
   * their own, see mergePatches. */
 void
@@ -74,13 +112,17 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
       return larger (x.first, y.first);
     return x.second != y.second && larger (x.second, y.second);
   });
-  // Per union-find root: the group's representative and its member patches.
+  // Per union-find root: the group's representative, its member patches, and the sums of its
+  // samples' positions (least-squares plane of the whole group, kept up to date by adding sums).
   std::vector<std::uint32_t> representative (patches.size ());
   std::vector<std::vector<std::uint32_t>> group (patches.size ());
+  std::vector<Moments> moments (patches.size ());
   for (std::uint32_t p = 0; p < patches.size (); ++p)
   {
     representative[p] = p;
     group[p].assign (1, p);
+    for (const auto m : patches[p].members)
+      moments[p].add (points.points[m].cast<double> ());
   }
   for (const auto& pr : pairs)
   {
@@ -90,20 +132,33 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     const bool a_leads = larger (representative[ra], representative[rb]);
     const std::uint32_t lead = a_leads ? ra : rb, other = a_leads ? rb : ra;
     const PlanarPatch& plane = patches[representative[lead]];
-    std::size_t total = 0, inside = 0;
     // The band is the wider of the two groups' (their representatives' MDP): a noisier part of the
     // same plane (farther from the scanner) or a patch of its noise tails (samples the leading plane
     // turned down, seeded again by the small-plane pass) still joins; a face bent away does not.
     const double band = std::max (plane.mdp, patches[representative[other]].mdp);
-    for (const auto q : group[other])
-      for (const auto m : patches[q].members)
-      {
-        ++total;
-        inside += std::abs ((points.points[m].cast<double> () - plane.center).dot (plane.normal)) <= band;
-      }
-    if (static_cast<double> (inside) < (1.0 - max_outlier_ratio) * static_cast<double> (total))
-      continue;
+    const auto coplanar = [&] (const Eigen::Vector3d& center, const Eigen::Vector3d& normal) {
+      std::size_t total = 0, inside = 0;
+      for (const auto q : group[other])
+        for (const auto m : patches[q].members)
+        {
+          ++total;
+          inside += std::abs ((points.points[m].cast<double> () - center).dot (normal)) <= band;
+        }
+      return static_cast<double> (inside) >= (1.0 - max_outlier_ratio) * static_cast<double> (total);
+    };
+    // The representative's plane comes from its own samples only: its normal's error, tiny at its
+    // scale, grows with the distance across a large group (a 100 m floor of 10M samples, whose
+    // representative holds 40k, tilts by 1e-4 rad: 1 cm at 100 m, the noise). Where it fails, the
+    // leading group's least-squares plane over all its samples is asked too.
+    if (!coplanar (plane.center, plane.normal))
+    {
+      Eigen::Vector3d center, normal;
+      if (!moments[lead].plane (center, normal) || !coplanar (center, normal))
+        continue;
+    }
     const std::uint32_t lead_rep = representative[lead];
+    Moments sum = moments[lead];
+    sum.merge (moments[other]);
     std::vector<std::uint32_t> joined;
     joined.swap (group[lead]);
     joined.insert (joined.end (), group[other].begin (), group[other].end ());
@@ -112,6 +167,7 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     const std::uint32_t root = sets.find (ra);
     group[root].swap (joined);
     representative[root] = lead_rep;
+    moments[root] = sum;
   }
 }
 } // namespace

@@ -134,6 +134,40 @@ TEST (PatchMerge, CoplanarGroupsStopTheChain)
   EXPECT_EQ (f.patches.size (), 3u);
 }
 
+TEST (PatchMerge, CoplanarGroupsAskTheLeadingGroupsOwnPlaneToo)
+{
+  // A large plane's representative holds a small part of it, and its normal's small error grows
+  // with the distance across the group (a 10M-sample floor split in two). Here A's estimate is
+  // tilted by 2°: B, which continues A's plane exactly, is out of that plane's band, but within the
+  // band of the least-squares plane of A's samples, so the two still merge.
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 30, 30, 0.001f, 1);
+  const auto b = rspd_test::addRectangle (s, {1, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20, 0.001f, 2);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  const double tilt = 2.0 * M_PI / 180.0;
+  const auto patchesOf = [&] {
+    return std::vector<PlanarPatch>{
+      rspd_test::makePatch (a, {0.5, 0.5, 0}, {std::sin (tilt), 0, std::cos (tilt)}, 0.005, 0.3),
+      rspd_test::makePatch (b, {1.5, 0.5, 0}, {0, 0, 1}, 0.005, 0.3)};
+  };
+  std::vector<PlanarPatch> patches = patchesOf ();
+  auto labels = labelSamples (s.size (), patches);
+  EXPECT_EQ (mergePatches (s, g, patches, labels), 1u);
+  ASSERT_EQ (patches.size (), 1u);
+  EXPECT_EQ (patches[0].members.size (), 1300u);
+  // Bent by 20° instead, B stays apart: the group's own plane does not hold it either.
+  PointSet bent;
+  const auto a2 = rspd_test::addRectangle (bent, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 30, 30, 0.001f, 1);
+  const float c = std::cos (0.35f), sn = std::sin (0.35f);
+  const auto b2 = rspd_test::addRectangle (bent, {1, 0, 0}, {c, 0, sn}, {0, 1, 0}, 20, 20, 0.001f, 2);
+  const NeighborGraph g2 = rspd_test::bruteForceGraph (bent.points, 8);
+  std::vector<PlanarPatch> apart{rspd_test::makePatch (a2, {0.5, 0.5, 0}, {0, 0, 1}, 0.005, 0.5),
+                                 rspd_test::makePatch (b2, {1 + 0.5 * c, 0.5, 0.5 * sn}, {-sn, 0, c}, 0.005, 0.5)};
+  auto labels2 = labelSamples (bent.size (), apart);
+  EXPECT_EQ (mergePatches (bent, g2, apart, labels2), 0u);
+  EXPECT_EQ (apart.size (), 2u);
+}
+
 TEST (PatchMerge, CoplanarGroupsStillJoinANoisierPartOfTheSamePlane)
 {
   // B continues A's plane with 4x the noise (a farther, sparser part of a scanned wall). Most of B
