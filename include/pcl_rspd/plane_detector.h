@@ -63,7 +63,9 @@ struct DetectorParameters
   bool drop_outlier_seeds = true;
   /** \brief Departure (M4, coplanar groups): two groups merge only if at least (1 - T3 ratio) of the
     * samples of the group whose representative is smaller lie within the larger representative's
-    * plane (the plane the merged group keeps) by the wider of the two representatives' MDP. Pairs
+    * plane (the plane the merged group keeps) by the wider of the two representatives' MDP, or
+    * failing that within the least-squares plane of all the larger group's samples (a representative
+    * holding a small part of a large group tilts by its estimate's error across it). Pairs
     * meeting M1-M3 are joined largest representative first. false = the paper's transitive union of
     * every pair, which lets small steps (facets of a faceted or curved object, each within MND of
     * the next) chain a plane around a bend. */
