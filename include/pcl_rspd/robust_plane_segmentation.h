@@ -84,8 +84,9 @@ struct RobustPlane
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth;
   *  - coplanar groups, M4 (setCoplanarMerge(false) for the paper): groups join largest first and
-  *    only when most of the smaller one lies in the distance band of the plane the union keeps, so
-  *    facets of a faceted or curved object do not chain into one plane;
+  *    only when most of the smaller one lies in the distance band of the plane the union keeps (or
+  *    of the least-squares plane of the larger group's samples), so facets of a faceted or curved
+  *    object do not chain into one plane;
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals);
   *  - orientation (setDetectionFrame(InputAxes) for the paper): the octree cells and the
