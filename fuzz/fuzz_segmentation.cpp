@@ -19,8 +19,8 @@
  *   7    offset magnitude (b7 % 8: 0, 1, 1e2 .. 1e6) and signs per axis (bits 3-5)
  *   8    epsilon (3 + b8 % 40 when flag 8); if b8 & 128, grow-merge cap 1 + (b8 >> 5 & 3)
  *   9    sensor origin (b9 & 3); b9 & 4: setSmallPlaneSeeding (false); b9 & 8: setNormalScale (Adaptive,
- *        or Automatic with b9 & 16); b9 & 32: setCoplanarMerge (false), setDropOutlierSeeds (false) and
- *        setDetectionFrame (InputAxes);
+ *        or Automatic with b9 & 16); b9 & 32: setCoplanarMerge (false), setDropOutlierSeeds (false),
+ *        setDetectionFrame (InputAxes) and setNormalFit (Pca);
  *        b9 & 64: setCurvedPlaneCheck (true); b9 & 128: setFinalAssignment (All, or None with b9 & 32)
  *   10   slopes of the tilted plane
  *   11   index count (b11 * n / 128), jitter amplitude (b11 & 7), normals size mismatch (b11 & 128
@@ -233,6 +233,7 @@ configure (Seg& seg, int k, std::uint8_t flags, std::uint8_t b8, std::uint8_t or
     seg.setCoplanarMerge (false);
     seg.setDropOutlierSeeds (false);
     seg.setDetectionFrame (pcl::rspd::DetectionFrame::InputAxes);
+    seg.setNormalFit (pcl::rspd::NormalFit::Pca);
   }
   if (origin_code & 64)
     seg.setCurvedPlaneCheck (true);

@@ -237,16 +237,22 @@ std::size_t
 dropOutlierSeeds (const DetectorParameters& params, std::vector<PlanarPatch>& seeds)
 {
   // Log scale: normal noise differs by factors across a scene (near and far, smooth and rough),
-  // and a factor is what the robust spread should be measured in.
+  // and a factor is what the robust spread should be measured in. MND below the normal-deviation
+  // floor is rounding, not noise: it is floored before the log (on exact normals 1e-7 and 1e-5 rad
+  // would otherwise be a factor of 100 apart), and the limit is widened by the floor (on a
+  // noise-free box most seeds sit at the floor, MAD = 0, and a face whose normals round 1e-4 rad
+  // differently would be all "outliers").
+  const double floor = std::max (params.normal_deviation_floor, 1e-12);
+  const auto log_mnd = [floor] (const PlanarPatch& p) { return std::log (std::max (p.mnd, floor)); };
   std::vector<double> logs;
   logs.reserve (seeds.size ());
   for (const auto& p : seeds)
-    logs.push_back (std::log (std::max (p.mnd, 1e-12)));
+    logs.push_back (log_mnd (p));
   const RobustSpread spread = robustSpreadInPlace (logs);
-  const double limit = spread.median + params.alpha * spread.mad;
+  const double limit = std::exp (spread.median + params.alpha * spread.mad) + params.normal_deviation_floor;
   const std::size_t before = seeds.size ();
   seeds.erase (std::remove_if (seeds.begin (), seeds.end (),
-                               [&] (const PlanarPatch& p) { return std::log (std::max (p.mnd, 1e-12)) > limit; }),
+                               [&] (const PlanarPatch& p) { return p.mnd > limit; }),
                seeds.end ());
   return before - seeds.size ();
 }

@@ -7,6 +7,7 @@
 #include <pcl_rspd/dominant_frame.h>
 #include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/robust_normals.h>
 
 #include <pcl/ModelCoefficients.h>
 #include <pcl/PointIndices.h>
@@ -89,6 +90,9 @@ struct RobustPlane
   *    object do not chain into one plane;
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals);
+  *  - robust normals (setNormalFit(Pca) for the paper's PCA): estimated normals come from the
+  *    reweighted least-trimmed-squares plane of the same k-neighbourhood (pcl::rspd::refineNormalsTrimmed),
+  *    so normals near an edge belong to one face instead of bending between two;
   *  - orientation (setDetectionFrame(InputAxes) for the paper): the octree cells and the
   *    component-wise medians of Eqs. 3-4 follow the cloud's axes; the phases run instead in the frame
   *    of the dominant normal directions (pcl::rspd::dominantFrame), so a rotated cloud gives the
@@ -265,6 +269,16 @@ public:
   bool
   getCoplanarMerge () const { return params_.coplanar_merge; }
 
+  /** \brief How estimated normals are fitted (used only without setInputNormals; default
+    * pcl::rspd::NormalFit::TrimmedPlane: least trimmed squares on the same k-neighbourhood, then
+    * reweighted, where that neighbourhood resolves a surface; Pca = the paper's). See
+    * pcl::rspd::refineNormalsTrimmed. */
+  void
+  setNormalFit (pcl::rspd::NormalFit fit);
+  /** \brief How estimated normals are fitted. */
+  pcl::rspd::NormalFit
+  getNormalFit () const { return normal_fit_; }
+
   /** \brief The axes the octree is cut along and the medians of Eqs. 3-4 are taken on (default
     * pcl::rspd::DetectionFrame::DominantPlanes: those of the most common normal directions, so the
     * planes found do not depend on how the cloud is rotated; InputAxes = the paper). */
@@ -406,6 +420,10 @@ public:
     * with NormalScale Adaptive or Automatic). */
   const pcl::rspd::NormalScaleStatistics&
   getNormalScaleStatistics () const { return normal_scale_stats_; }
+  /** \brief What the trimmed-plane normal fit did in the last detection (zeros with NormalFit::Pca
+    * or given normals). */
+  const pcl::rspd::TrimmedNormalStatistics&
+  getTrimmedNormalStatistics () const { return trimmed_normal_stats_; }
 
   /** \brief Whether the last detection succeeded. */
   bool
@@ -444,6 +462,7 @@ protected:
   bool small_plane_seeding_ = true;
   pcl::rspd::NormalScale normal_scale_ = pcl::rspd::NormalScale::Automatic;
   pcl::rspd::DetectionFrame detection_frame_ = pcl::rspd::DetectionFrame::DominantPlanes;
+  pcl::rspd::NormalFit normal_fit_ = pcl::rspd::NormalFit::TrimmedPlane;
   pcl::rspd::DetectorParameters params_;
 
   int model_type_;
@@ -457,6 +476,7 @@ protected:
   pcl::rspd::NeighborGraph graph_;
   pcl::rspd::DetectorStatistics stats_;
   pcl::rspd::NormalScaleStatistics normal_scale_stats_;
+  pcl::rspd::TrimmedNormalStatistics trimmed_normal_stats_;
   std::vector<RobustPlane> planes_;
   std::vector<std::uint32_t> labels_;
 

@@ -299,6 +299,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNormalFit (pcl::rspd::NormalFit fit)
+{
+  normal_fit_ = fit;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setDetectionFrame (pcl::rspd::DetectionFrame frame)
 {
   detection_frame_ = frame;
@@ -630,6 +637,17 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     pcl::rspd::estimateNormals (points_.points, graph_, params_.num_threads, points_.normals);
     stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
   }
+  if (!normals_ && normal_fit_ == pcl::rspd::NormalFit::TrimmedPlane)
+  {
+    // Departure (robust normals): trimmed planes instead of PCA where the k-scale resolves a surface.
+    const auto t2 = std::chrono::steady_clock::now ();
+    pcl::rspd::refineNormalsTrimmed (points_.points, graph_, params_.num_threads, points_.normals,
+                                     &trimmed_normal_stats_);
+    stats_.normals_seconds += std::chrono::duration<double> (std::chrono::steady_clock::now () - t2).count ();
+    PCL_DEBUG ("[pcl::%s::segment] trimmed-plane normals: %zu refined, %zu unresolved at k, %zu on a line\n",
+               name, trimmed_normal_stats_.refined, trimmed_normal_stats_.unresolved,
+               trimmed_normal_stats_.collinear);
+  }
   return true;
 }
 
@@ -750,6 +768,7 @@ RobustPlaneSegmentation<PointT, NormalT>::compute ()
   labels_.clear ();
   stats_ = pcl::rspd::DetectorStatistics ();
   normal_scale_stats_ = pcl::rspd::NormalScaleStatistics ();
+  trimmed_normal_stats_ = pcl::rspd::TrimmedNormalStatistics ();
   try
   {
     const auto t0 = std::chrono::steady_clock::now ();
