@@ -315,7 +315,7 @@ TEST (RobustPlaneSegmentation, FinalAssignmentReachesTheEdges)
   {
     pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
     seg.setInputCloud (cloud);
-    seg.setNormalFit (pcl::rspd::NormalFit::Pca); // the bands of bent PCA normals are the point here
+    seg.setNormalFit (pcl::rspd::NormalFit::Pca); // the bands of bent PCA normals are the point here (default)
     seg.setFinalAssignment (mode);
     EXPECT_EQ (seg.getFinalAssignment (), mode);
     std::vector<pcl::ModelCoefficients> c;

@@ -202,7 +202,7 @@ TEST (SegmentCli, DepartureSwitches)
   const std::string turned = labels ("t.pcd", "turned.pcd", {});
   EXPECT_TRUE (turned == labels ("t.pcd", "turned_planes.pcd", {"--frame", "planes"}));
   EXPECT_FALSE (turned == labels ("t.pcd", "turned_axes.pcd", {"--frame=axes"}));
-  // The normal fit: PCA normals (the paper) give other labels than the trimmed planes.
-  EXPECT_TRUE (room == labels ("r.pcd", "room_trimmed.pcd", {"--normal-fit", "trimmed"}));
-  EXPECT_FALSE (room == labels ("r.pcd", "room_pca.pcd", {"--normal-fit=pca"}));
+  // The normal fit: the trimmed planes give other labels than PCA normals (the paper, the default).
+  EXPECT_TRUE (room == labels ("r.pcd", "room_pca.pcd", {"--normal-fit", "pca"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_trimmed.pcd", {"--normal-fit=trimmed"}));
 }
