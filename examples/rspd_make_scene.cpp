@@ -214,24 +214,32 @@ main (int argc, char** argv)
     }
     pcl::PointCloud<pcl::PointXYZ> cloud = *loaded.xyz;
     pcl::rspd::transformCloud (cloud, options);
+    // Temporary file next to the target, renamed into place once complete (cloud_io's helpers).
     const std::string pcd_path = prefix + ".pcd";
-    const std::string pcd_tmp = tempName (pcd_path);
-    errno = 0;
+    std::string tmp;
+    if (!rspd_tools::createTempFileFor (pcd_path, tmp, error))
+    {
+      std::fprintf (stderr, "rspd_make_scene: %s\n", error.c_str ());
+      return 1;
+    }
     int status = -1;
     try
     {
-      status = pcl::io::savePCDFileBinary (pcd_tmp, cloud);
+      status = pcl::io::savePCDFileBinary (tmp, cloud);
     }
     catch (const std::exception&)
     {
       status = -1;
     }
-    if (status < 0 || std::rename (pcd_tmp.c_str (), pcd_path.c_str ()) != 0)
+    if (status < 0)
     {
-      const int err = errno;
-      std::remove (pcd_tmp.c_str ());
-      std::fprintf (stderr, "rspd_make_scene: cannot write '%s'%s%s\n", pcd_path.c_str (), err != 0 ? ": " : "",
-                    err != 0 ? std::strerror (err) : "");
+      rspd_tools::discardTempFile (tmp);
+      std::fprintf (stderr, "rspd_make_scene: cannot write '%s'\n", pcd_path.c_str ());
+      return 1;
+    }
+    if (!rspd_tools::commitTempFile (tmp, pcd_path, error))
+    {
+      std::fprintf (stderr, "rspd_make_scene: %s\n", error.c_str ());
       return 1;
     }
     std::printf ("%s: %zu points moved -> %s (the input's truth applies, same point order)\n", name.c_str (),

@@ -14,8 +14,10 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 seg_args=("$@")
 
-score () { # CLOUD TRUTH -> "F1 precision recall found false"
-  "$bin/rspd_segment" "$1" -o "$tmp/out.pcd" "${seg_args[@]}" > /dev/null
+# CLOUD TRUTH [DETECT_ON] -> "F1 precision recall found fragments false": detect on DETECT_ON (a
+# moved copy of CLOUD, same point order; CLOUD itself if absent), score against CLOUD and TRUTH.
+score () {
+  "$bin/rspd_segment" "${3:-$1}" -o "$tmp/out.pcd" "${seg_args[@]}" > /dev/null
   "$bin/rspd_evaluate" "$1" "$2" "$tmp/out.pcd" --json | /usr/bin/python3 -c '
 import json, sys
 j = json.load(sys.stdin)
@@ -41,12 +43,6 @@ echo
 # Each moved copy keeps the point order, so its labels are scored against the original cloud and
 # truth (the voxel metric itself is not rotation-invariant: scoring a turned cloud on its own
 # turned truth would mix the metric's change into the detector's).
-score_on () { # ORIGINAL_CLOUD TRUTH MOVED_CLOUD -> F1
-  "$bin/rspd_segment" "$3" -o "$tmp/out.pcd" "${seg_args[@]}" > /dev/null
-  "$bin/rspd_evaluate" "$1" "$2" "$tmp/out.pcd" --json | /usr/bin/python3 -c '
-import json, sys
-print("%.3f" % json.load(sys.stdin)["f1"])'
-}
 echo "| cloud | F1 as given | x1000 | 1 km away | rotation 1 | rotation 2 | rotation 3 | largest change |"
 echo "|---|---|---|---|---|---|---|---|"
 clouds=()
@@ -62,7 +58,8 @@ for c in "${clouds[@]}"; do
   for v in "" "--scale 1000" "--offset 1000 0 0" "--rotate --seed 1" "--rotate --seed 2" "--rotate --seed 3"; do
     # shellcheck disable=SC2086
     "$bin/rspd_make_scene" "$c.pcd" "$tmp/moved" $v > /dev/null
-    row+=("$(score_on "$c.pcd" "$c.gt" "$tmp/moved.pcd")")
+    read -r f _ < <(score "$c.pcd" "$c.gt" "$tmp/moved.pcd")
+    row+=("$f")
   done
   delta=$(/usr/bin/python3 -c "import sys; v=[float(x) for x in sys.argv[1:]]; print('%.3f' % max(abs(x - v[0]) for x in v))" "${row[@]}")
   echo "| $(basename "$c") | ${row[0]} | ${row[1]} | ${row[2]} | ${row[3]} | ${row[4]} | ${row[5]} | $delta |"

@@ -112,18 +112,32 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
       return larger (x.first, y.first);
     return x.second != y.second && larger (x.second, y.second);
   });
-  // Per union-find root: the group's representative, its member patches, and the sums of its
-  // samples' positions (least-squares plane of the whole group, kept up to date by adding sums).
+  // Per union-find root: the group's representative and its member patches.
   std::vector<std::uint32_t> representative (patches.size ());
   std::vector<std::vector<std::uint32_t>> group (patches.size ());
-  std::vector<Moments> moments (patches.size ());
   for (std::uint32_t p = 0; p < patches.size (); ++p)
   {
     representative[p] = p;
     group[p].assign (1, p);
-    for (const auto m : patches[p].members)
-      moments[p].add (points.points[m].cast<double> ());
   }
+  // Position sums per patch, computed the first time a group's least-squares plane is asked for
+  // (most merges never ask); a group's sums are those of its patches added.
+  std::vector<Moments> patch_moments (patches.size ());
+  std::vector<char> has_moments (patches.size (), 0);
+  const auto groupMoments = [&] (std::uint32_t root) {
+    Moments sum;
+    for (const auto q : group[root])
+    {
+      if (!has_moments[q])
+      {
+        for (const auto m : patches[q].members)
+          patch_moments[q].add (points.points[m].cast<double> ());
+        has_moments[q] = 1;
+      }
+      sum.merge (patch_moments[q]);
+    }
+    return sum;
+  };
   for (const auto& pr : pairs)
   {
     const std::uint32_t ra = sets.find (pr.first), rb = sets.find (pr.second);
@@ -153,12 +167,10 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     if (!coplanar (plane.center, plane.normal))
     {
       Eigen::Vector3d center, normal;
-      if (!moments[lead].plane (center, normal) || !coplanar (center, normal))
+      if (!groupMoments (lead).plane (center, normal) || !coplanar (center, normal))
         continue;
     }
     const std::uint32_t lead_rep = representative[lead];
-    Moments sum = moments[lead];
-    sum.merge (moments[other]);
     std::vector<std::uint32_t> joined;
     joined.swap (group[lead]);
     joined.insert (joined.end (), group[other].begin (), group[other].end ());
@@ -167,7 +179,6 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     const std::uint32_t root = sets.find (ra);
     group[root].swap (joined);
     representative[root] = lead_rep;
-    moments[root] = sum;
   }
 }
 } // namespace

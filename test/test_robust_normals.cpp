@@ -25,6 +25,25 @@ angleTo (const Eigen::Vector3f& n, const Eigen::Vector3f& truth)
   return std::acos (std::min (1.0f, std::abs (n.normalized ().dot (truth))));
 }
 
+/** A sample set's k = 50 graph, its PCA normals, and those normals refined by trimmed planes. */
+struct BothFits
+{
+  NeighborGraph graph;
+  std::vector<Eigen::Vector3f> pca, trimmed;
+  TrimmedNormalStatistics stats;
+};
+
+BothFits
+fitBoth (const PointSet& s)
+{
+  BothFits f;
+  f.graph = rspd_test::bruteForceGraph (s.points, 50);
+  estimateNormals (s.points, f.graph, 1, f.pca);
+  f.trimmed = f.pca;
+  refineNormalsTrimmed (s.points, f.graph, 1, f.trimmed, &f.stats);
+  return f;
+}
+
 /** A roof: two 1 x 1 faces meeting at 90° along the y axis, σ = 2 mm; face[i] = 0 or 1. */
 PointSet
 roof (std::vector<int>& face)
@@ -46,12 +65,10 @@ TEST (TrimmedNormals, NormalsNearAnEdgeBelongToOneFace)
   // plane takes the sample's own face.
   std::vector<int> face;
   PointSet s = roof (face);
-  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 50);
-  std::vector<Eigen::Vector3f> pca, trimmed;
-  estimateNormals (s.points, g, 1, pca);
-  trimmed = pca;
-  TrimmedNormalStatistics stats;
-  refineNormalsTrimmed (s.points, g, 1, trimmed, &stats);
+  const BothFits fits = fitBoth (s);
+  const auto& pca = fits.pca;
+  const auto& trimmed = fits.trimmed;
+  const TrimmedNormalStatistics& stats = fits.stats;
   EXPECT_GT (stats.refined, s.size () * 9 / 10);
   const Eigen::Vector3f truth[2] = {Eigen::Vector3f::UnitZ (), Eigen::Vector3f::UnitX ()};
   std::size_t near = 0, pca_bent = 0, trimmed_bent = 0;
@@ -79,11 +96,9 @@ TEST (TrimmedNormals, FlatNoisySurfaceKeepsPcaAccuracy)
   // widen MND), and less than 1.5 times PCA's.
   PointSet s;
   rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 80, 80, 0.005f, 3);
-  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 50);
-  std::vector<Eigen::Vector3f> pca, trimmed;
-  estimateNormals (s.points, g, 1, pca);
-  trimmed = pca;
-  refineNormalsTrimmed (s.points, g, 1, trimmed);
+  const BothFits fits = fitBoth (s);
+  const auto& pca = fits.pca;
+  const auto& trimmed = fits.trimmed;
   std::vector<double> a, b;
   for (std::size_t i = 0; i < s.size (); ++i)
   {
@@ -107,16 +122,15 @@ TEST (TrimmedNormals, ScanLinesKeepTheirPcaNormal)
       s.normals.push_back (Eigen::Vector3f::UnitZ ());
       s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
     }
-  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 50);
-  std::vector<Eigen::Vector3f> pca, trimmed;
-  estimateNormals (s.points, g, 1, pca);
-  trimmed = pca;
-  TrimmedNormalStatistics stats;
-  refineNormalsTrimmed (s.points, g, 1, trimmed, &stats);
+  const BothFits fits = fitBoth (s);
+  const auto& pca = fits.pca;
+  const auto& trimmed = fits.trimmed;
+  const TrimmedNormalStatistics& stats = fits.stats;
   std::size_t off = 0;
   for (std::size_t i = 0; i < s.size (); ++i)
     off += angleTo (trimmed[i], Eigen::Vector3f::UnitZ ()) > 1e-3;
   EXPECT_EQ (off, 0u);
+  EXPECT_GT (stats.collinear, 0u) << "the scan-line guard is what kept them";
 }
 
 TEST (TrimmedNormals, SameResultForAnyThreadCountAndTurnedCloud)

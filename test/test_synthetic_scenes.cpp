@@ -108,6 +108,45 @@ TEST (SyntheticScenes, InvalidOptionsThrow)
   EXPECT_THROW (makeScene ("cube", o), std::invalid_argument);
 }
 
+TEST (SyntheticScenes, TransformCloudMovesAsMakeSceneDoes)
+{
+  // A generated scene moved afterwards lands where makeScene puts it with the same options (up to
+  // the rotation centre: the finite points' box here, the nominal box there, so compare shapes), and
+  // NaN points stay NaN; bad options throw and leave the cloud as it was.
+  SceneOptions plain;
+  plain.num_points = 2000;
+  Scene scene = makeScene ("cube", plain);
+  scene.cloud[7].x = std::nanf ("");
+  pcl::PointCloud<pcl::PointXYZ> moved = scene.cloud;
+  SceneOptions o = plain;
+  o.random_rotation = true;
+  o.scale = 3.0;
+  o.offset = Eigen::Vector3d (10, 0, 0);
+  transformCloud (moved, o);
+  const Scene direct = makeScene ("cube", o);
+  EXPECT_TRUE (std::isnan (moved[7].x));
+  for (std::size_t i = 1; i < moved.size (); i += 37)
+  {
+    if (i == 7)
+      continue;
+    const float d_moved = (moved[i].getVector3fMap () - moved[0].getVector3fMap ()).norm ();
+    const float d_direct = (direct.cloud[i].getVector3fMap () - direct.cloud[0].getVector3fMap ()).norm ();
+    EXPECT_NEAR (d_moved, d_direct, 1e-4f * (1.0f + d_direct)) << i;
+    // The same rotation: differences between points turn alike.
+    const Eigen::Vector3f a = moved[i].getVector3fMap () - moved[0].getVector3fMap ();
+    const Eigen::Vector3f b = direct.cloud[i].getVector3fMap () - direct.cloud[0].getVector3fMap ();
+    EXPECT_LT ((a - b).norm (), 1e-4f * (1.0f + b.norm ())) << i;
+  }
+  pcl::PointCloud<pcl::PointXYZ> kept = scene.cloud;
+  SceneOptions bad = plain;
+  bad.scale = -1.0;
+  EXPECT_THROW (transformCloud (kept, bad), std::invalid_argument);
+  bad.scale = 1.0;
+  bad.offset = Eigen::Vector3d (std::nan (""), 0, 0);
+  EXPECT_THROW (transformCloud (kept, bad), std::invalid_argument);
+  EXPECT_EQ (kept[3].getVector3fMap (), scene.cloud[3].getVector3fMap ());
+}
+
 /** Every scene at its default settings, one test per scene. */
 class DefaultScene : public ::testing::TestWithParam<std::string>
 {};

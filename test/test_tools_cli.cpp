@@ -81,6 +81,9 @@ TEST (MakeSceneCli, MovesAGivenCloudKeepingItsShapeAndOrder)
   const auto missing = runTool (tool, {dir.file ("none.pcd"), dir.file ("n"), "--rotate"});
   EXPECT_EQ (missing.status, 1);
   EXPECT_EQ (rspd_test::lineCount (missing.err), 1) << missing.err;
+  const auto unwritable = runTool (tool, {dir.file ("r.pcd"), "/nonexistent_dir/m", "--rotate"});
+  EXPECT_EQ (unwritable.status, 1);
+  EXPECT_EQ (rspd_test::lineCount (unwritable.err), 1) << unwritable.err;
 }
 
 TEST (EvaluateCli, TruthAgainstItselfScoresOneAndJsonHasTheKeys)
