@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -79,7 +80,7 @@ moments (const std::vector<Eigen::Vector3d>& q, const std::vector<int>& ids, std
 class TrimmedFit
 {
 public:
-  TrimmedFit (std::size_t m, std::size_t h) : m_ (m), h_ (h), ids_ (m), key_ (m), scratch_ (m) {}
+  TrimmedFit (std::size_t m, std::size_t h) : m_ (m), h_ (h), ids_ (m), key_ (m), packed_ (m), chosen_ (m), fitted_ (m) {}
 
   /** Concentration steps from the plane (c, n); returns the trimmed sum, updates c and n. */
   double
@@ -94,10 +95,17 @@ public:
         key_[j] = r * r;
       }
       const double sum = selectSmallest ();
-      // The sum never rises; once it stops falling the subset is the one just fitted.
-      if (!(sum < objective * (1.0 - 1e-9)))
+      // The plane (c, n) was fitted to the subset just selected: converged. (The sum never rises;
+      // the second test only guards against a cycle through rounding.)
+      if (step > 0 && chosen_ == fitted_)
+      {
+        objective = std::min (objective, sum);
+        break;
+      }
+      if (!(sum < objective))
         break;
       objective = sum;
+      fitted_ = chosen_;
       Eigen::Matrix3d cov;
       moments (q, ids_, h_, c, cov);
       n = smallestEigenvector (cov);
@@ -109,10 +117,7 @@ public:
   bool
   holdsSample () const
   {
-    for (std::size_t j = 0; j < h_; ++j)
-      if (ids_[j] == 0)
-        return true;
-    return false;
+    return chosen_[0] != 0;
   }
 
   /** The h samples nearest the plane (c, n). */
@@ -140,36 +145,38 @@ public:
   ids () { return ids_; }
 
 private:
-  /** Puts the h smallest keys first in ids_ (ties by position, so the result is deterministic) and
-    * returns their sum. */
+  /** Puts the h smallest keys first in ids_ (ties by position, so the result is deterministic),
+    * marks them in chosen_ and returns their sum. */
   double
   selectSmallest ()
   {
-    // The h-th smallest key by selection on a copy, then one pass in position order: keys below
-    // it, then keys equal to it until h are taken (ties go to the lower position).
-    scratch_ = key_;
-    std::nth_element (scratch_.begin (), scratch_.begin () + static_cast<std::ptrdiff_t> (h_ - 1), scratch_.end ());
-    const double cut = scratch_[h_ - 1];
-    std::size_t below = 0;
+    // One selection on (key, position) packed in 64 bits: a non-negative float's bits order as the
+    // float does, and the position below them breaks ties. Keys are compared in single precision.
     for (std::size_t j = 0; j < m_; ++j)
-      below += key_[j] < cut;
-    std::size_t taken = 0, ties = h_ - below;
+    {
+      const float f = static_cast<float> (key_[j]);
+      std::uint32_t bits;
+      std::memcpy (&bits, &f, sizeof bits);
+      packed_[j] = (static_cast<std::uint64_t> (bits) << 32) | static_cast<std::uint64_t> (j);
+    }
+    std::nth_element (packed_.begin (), packed_.begin () + static_cast<std::ptrdiff_t> (h_ - 1), packed_.end ());
+    std::fill (chosen_.begin (), chosen_.end (), 0);
     double sum = 0.0;
-    for (std::size_t j = 0; j < m_ && taken < h_; ++j)
-      if (key_[j] < cut || (key_[j] == cut && ties > 0))
-      {
-        if (!(key_[j] < cut))
-          --ties;
-        ids_[taken++] = static_cast<int> (j);
-        sum += key_[j];
-      }
+    for (std::size_t t = 0; t < h_; ++t)
+    {
+      const auto j = static_cast<std::uint32_t> (packed_[t] & 0xffffffffu);
+      ids_[t] = static_cast<int> (j);
+      chosen_[j] = 1;
+      sum += key_[j];
+    }
     return sum;
   }
 
   std::size_t m_, h_;
   std::vector<int> ids_;
   std::vector<double> key_;
-  std::vector<double> scratch_;
+  std::vector<std::uint64_t> packed_;
+  std::vector<std::uint8_t> chosen_, fitted_; ///< the subset last selected / last fitted
 };
 } // namespace
 

@@ -272,7 +272,7 @@ public:
   /** \brief How estimated normals are fitted (used only without setInputNormals; default
     * pcl::rspd::NormalFit::Pca, the paper's; TrimmedPlane: least trimmed squares on the same
     * k-neighbourhood, then reweighted, where that neighbourhood resolves a surface — more accurate
-    * at edges, about 30 times the cost of the normal stage). See pcl::rspd::refineNormalsTrimmed. */
+    * at edges, about 20 times the cost of the normal stage). See pcl::rspd::refineNormalsTrimmed. */
   void
   setNormalFit (pcl::rspd::NormalFit fit);
   /** \brief How estimated normals are fitted. */
