@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -61,8 +61,9 @@ const char* const kHelp =
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
     "  --assign M       once growth is stable, give points growth left out to a neighbouring plane\n"
-    "                   by distance alone: next to two or more planes ('edges', the default),\n"
-    "                   next to any ('all'), or none ('none', the paper)\n"
+    "                   by distance alone: next to two or more planes ('edges'); those and, inside\n"
+    "                   one plane, points with its normal within 3 robust sigma of it ('tails', the\n"
+    "                   default); next to any ('all'); or none ('none', the paper)\n"
     "  --threads N      OpenMP threads (default: OpenMP's default, OMP_NUM_THREADS is honoured)\n"
     "  -v               progress and per-stage timings on stderr\n"
     "\n"
@@ -86,7 +87,7 @@ struct Options
   bool drop_outlier_seeds = true;
   bool dominant_frame = true;
   bool trimmed_normals = false;
-  pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Edges;
+  pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Tails;
   bool verbose = false;
   bool help = false;
 };
@@ -178,12 +179,14 @@ parseArguments (int argc, char** argv)
       const std::string v = value ();
       if (v == "edges")
         o.assignment = pcl::rspd::FinalAssignment::Edges;
+      else if (v == "tails")
+        o.assignment = pcl::rspd::FinalAssignment::Tails;
       else if (v == "all")
         o.assignment = pcl::rspd::FinalAssignment::All;
       else if (v == "none")
         o.assignment = pcl::rspd::FinalAssignment::None;
       else
-        throw UsageError{"--assign needs 'edges', 'all' or 'none' (got '" + v + "')"};
+        throw UsageError{"--assign needs 'edges', 'tails', 'all' or 'none' (got '" + v + "')"};
     }
     else if (arg == "--threads" || arg == "-t")
     {

@@ -21,7 +21,8 @@
  *   9    sensor origin (b9 & 3); b9 & 4: setSmallPlaneSeeding (false); b9 & 8: setNormalScale (Adaptive,
  *        or Automatic with b9 & 16); b9 & 32: setCoplanarMerge (false), setDropOutlierSeeds (false),
  *        setDetectionFrame (InputAxes) and setNormalFit (Pca);
- *        b9 & 64: setCurvedPlaneCheck (true) and setNormalFit (TrimmedPlane); b9 & 128: setFinalAssignment (All, or None with b9 & 32)
+ *        b9 & 64: setCurvedPlaneCheck (true) and setNormalFit (TrimmedPlane); b9 & 128: setFinalAssignment (All;
+ *        None with b9 & 32, else Edges with b9 & 64; the default is Tails)
  *   10   slopes of the tilted plane
  *   11   index count (b11 * n / 128), jitter amplitude (b11 & 7), normals size mismatch (b11 & 128
  *        together with out-of-range indices)
@@ -241,7 +242,9 @@ configure (Seg& seg, int k, std::uint8_t flags, std::uint8_t b8, std::uint8_t or
     seg.setNormalFit (pcl::rspd::NormalFit::TrimmedPlane);
   }
   if (origin_code & 128)
-    seg.setFinalAssignment ((origin_code & 32) ? pcl::rspd::FinalAssignment::None : pcl::rspd::FinalAssignment::All);
+    seg.setFinalAssignment ((origin_code & 32)   ? pcl::rspd::FinalAssignment::None
+                            : (origin_code & 64) ? pcl::rspd::FinalAssignment::Edges
+                                                 : pcl::rspd::FinalAssignment::All);
   seg.setNumberOfThreads (1);
   seg.setNumberOfNeighbours (k);
   if (flags & 8)

@@ -54,14 +54,33 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
   * neighbour's k nearest (mutual neighbours: an isolated outlier is nobody's neighbour). The normal
   * condition is left out on purpose: PCA normals bend within a neighbourhood radius of an edge,
   * which is exactly where growth stops short. Edges: only samples next to two or more planes (an
-  * edge band), so clutter and outliers beside a single plane stay out. Each round reads the labels
-  * of the round before, so the result does not depend on the thread count.
+  * edge band), so clutter and outliers beside a single plane stay out. Tails: also a sample most of
+  * whose neighbours hold one plane, if its normal passes that plane's MND and |d| <= 3 σ, σ =
+  * 1.4826 median |d| of the plane's members: MDP (median + α MAD of |d|, Eq. 6) is about 2.45 σ on Gaussian noise, so
+  * growth leaves the plane's own tail out, which a voxel-based count sees as a rim of missed
+  * voxels on each side of a noisy plane. Each round reads the labels of the round before, so the
+  * result does not depend on the thread count.
   * \return samples assigned */
 std::size_t
 assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
                         std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
 {
-  const bool edges_only = params.final_assignment == FinalAssignment::Edges;
+  const bool edges_only = params.final_assignment == FinalAssignment::Edges ||
+                          params.final_assignment == FinalAssignment::Tails;
+  const bool tails = params.final_assignment == FinalAssignment::Tails;
+  std::vector<double> tail_limit (tails ? patches.size () : 0);
+  if (tails)
+  {
+#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
+    for (std::ptrdiff_t l = 0; l < static_cast<std::ptrdiff_t> (patches.size ()); ++l)
+    {
+      const PlanarPatch& patch = patches[l];
+      std::vector<float> d (patch.members.size ());
+      for (std::size_t t = 0; t < d.size (); ++t)
+        d[t] = static_cast<float> (std::abs ((points.points[patch.members[t]].cast<double> () - patch.center).dot (patch.normal)));
+      tail_limit[l] = std::max (patch.mdp, 3.0 * kMadScale * medianInPlace (d));
+    }
+  }
   std::vector<std::uint32_t> left;
   for (std::uint32_t i = 0; i < labels.size (); ++i)
     if (labels[i] == kNoPatch)
@@ -76,18 +95,25 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
     {
       const std::uint32_t i = left[j];
       choice[j] = kNoPatch;
+      bool beside_one = false; // Tails: the sample's labelled neighbours all hold one plane
       if (edges_only)
       {
         std::uint32_t first = kNoPatch;
         bool several = false;
+        int held = 0, neighbours = 0;
         graph.forEachNeighbor (i, [&] (std::uint32_t n) {
           const std::uint32_t l = labels[n];
           if (l != kNoPatch && first == kNoPatch)
             first = l;
           several = several || (l != kNoPatch && l != first);
+          held += l != kNoPatch;
+          ++neighbours;
         });
-        if (!several)
+        // A tail sample lies inside its plane: most of its neighbours are members. (Beside the
+        // plane's rim, the unlabelled samples may be a surface no seed reached.)
+        if (!several && !(tails && first != kNoPatch && 2 * held > neighbours))
           continue;
+        beside_one = !several;
       }
       const Eigen::Vector3d p = points.points[i].cast<double> ();
       double best = HUGE_VAL;
@@ -96,7 +122,14 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
         if (l == kNoPatch || l == choice[j])
           return;
         const PlanarPatch& patch = patches[l];
-        const double r = std::abs ((p - patch.center).dot (patch.normal)) / patch.mdp;
+        const double d = std::abs ((p - patch.center).dot (patch.normal));
+        double r = d / patch.mdp;
+        if (beside_one)
+        {
+          if (std::abs (points.normals[i].cast<double> ().dot (patch.normal)) < patch.cos_mnd)
+            return;
+          r = d / tail_limit[l];
+        }
         if (!(r <= 1.0) || r > best || (r == best && l > choice[j]))
           return;
         bool mutual = false;

@@ -337,6 +337,57 @@ TEST (RobustPlaneSegmentation, FinalAssignmentReachesTheEdges)
   EXPECT_LE (labelled[2], labelled[1] + 20);
 }
 
+TEST (RobustPlaneSegmentation, TailsAssignmentTakesThePlanesNoiseTailOnly)
+{
+  // A plane with Gaussian noise (σ = 1 % of its side) and clutter above and below it. Growth's band
+  // (median + α MAD of |d|) is about 2.45 σ, so a few % of the plane stay out; Tails takes those
+  // within 3 robust σ whose normals agree, and no clutter sample farther than that.
+  auto cloud = std::make_shared<Cloud> ();
+  std::mt19937 rng (3);
+  std::uniform_real_distribution<float> u (0.0f, 1.0f);
+  std::normal_distribution<float> noise (0.0f, 0.01f);
+  const int on_plane = 20000;
+  for (int i = 0; i < on_plane; ++i)
+    cloud->push_back (pcl::PointXYZ (u (rng), u (rng), noise (rng)));
+  for (int i = 0; i < 600; ++i)
+    cloud->push_back (pcl::PointXYZ (u (rng), u (rng), 0.4f * u (rng) - 0.2f));
+  std::size_t taken[2] = {0, 0}, clutter_far[2] = {0, 0};
+  double tail_max = 0.0;
+  std::vector<std::uint32_t> edges_label;
+  int run = 0;
+  for (const auto mode : {pcl::rspd::FinalAssignment::Edges, pcl::rspd::FinalAssignment::Tails})
+  {
+    pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+    seg.setInputCloud (cloud);
+    seg.setFinalAssignment (mode);
+    EXPECT_EQ (seg.getFinalAssignment (), mode);
+    const auto labels = labelsOf (seg);
+    ASSERT_EQ (seg.getPlanes ().size (), 1u);
+    for (int i = 0; i < static_cast<int> (labels.size ()); ++i)
+    {
+      if (labels[i] == 0)
+        continue;
+      const float z = std::abs ((*cloud)[i].z);
+      if (i < on_plane)
+        ++taken[run];
+      else if (z > 0.035f)
+        ++clutter_far[run];
+      if (run == 1 && edges_label[i] == 0)
+        tail_max = std::max (tail_max, static_cast<double> (z));
+    }
+    if (run == 0)
+      edges_label = labels;
+    else
+      for (std::size_t i = 0; i < labels.size (); ++i)
+        EXPECT_TRUE (edges_label[i] == 0 || labels[i] == edges_label[i]) << i; // only adds
+    ++run;
+  }
+  EXPECT_LT (taken[0], on_plane * 99u / 100u);
+  EXPECT_GT (taken[1], taken[0] + on_plane / 200u);
+  EXPECT_LE (tail_max, 0.035); // 3.5 σ: 3 σ plus the estimates' error
+  EXPECT_EQ (clutter_far[1], clutter_far[0]);
+}
+
 TEST (RobustPlaneSegmentation, NoiseFreeCornerWithTrimmedNormalsKeepsEveryFace)
 {
   // Exact normals put most seeds' MND at the normal-deviation floor (MAD = 0); one face whose

@@ -193,10 +193,11 @@ TEST (SegmentCli, DepartureSwitches)
     return rspd_test::fileText (dir.file (out));
   };
   const std::string room = labels ("r.pcd", "room.pcd", {});
-  EXPECT_TRUE (room == labels ("r.pcd", "room_on.pcd", {"--coplanar-merge=on", "--outlier-seeds", "drop", "--assign", "edges", "--curved-check", "off"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_on.pcd", {"--coplanar-merge=on", "--outlier-seeds", "drop", "--assign", "tails", "--curved-check", "off"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_m4.pcd", {"--coplanar-merge", "off"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_assign.pcd", {"--assign=none"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_all.pcd", {"--assign", "all"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_edges.pcd", {"--assign", "edges"}));
   const std::string industrial = labels ("i.pcd", "ind.pcd", {"--outlier-seeds", "keep"});
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_curved.pcd", {"--outlier-seeds", "keep", "--curved-check", "on"}));
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_seeds.pcd", {}));

@@ -22,6 +22,8 @@ enum class FinalAssignment
 {
   None,  ///< the paper: a sample growth did not take stays unassigned
   Edges, ///< samples whose neighbours belong to two or more planes (edge bands of bent normals)
+  Tails, ///< Edges, and a plane's noise tail: samples most of whose neighbours hold one plane,
+         ///< within 3 robust standard deviations of it, whose normal passes its MND
   All    ///< every sample with a labelled neighbour (also takes clutter and outliers near a plane)
 };
 
@@ -72,8 +74,10 @@ struct DetectorParameters
   bool coplanar_merge = true;
   /** \brief Departure (last assignment): which samples no patch holds are offered to the planes of
     * their graph neighbours once grow-merge is stable, by distance alone (|d| <= MDP, nearest
-    * relative to MDP; the sample must be among its neighbour's k nearest too). */
-  FinalAssignment final_assignment = FinalAssignment::Edges;
+    * relative to MDP; the sample must be among its neighbour's k nearest too); with Tails also a
+    * sample most of whose neighbours hold one plane, if its normal passes that plane's MND and
+    * |d| <= 3 σ of the plane (σ = 1.4826 median |d| of its members). */
+  FinalAssignment final_assignment = FinalAssignment::Tails;
   /** \brief Departure (residual pattern, the paper's Sec. 5 suggestion): once grow-merge is stable,
     * a quadric w = f(u, v) is fitted to each plane's samples over its least-squares plane
     * (measureCurvature), and the plane is dropped as a facet of a curved surface (pipe, tank, pillar,

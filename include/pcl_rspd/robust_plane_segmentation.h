@@ -89,7 +89,9 @@ struct RobustPlane
   *    of the least-squares plane of the larger group's samples), so facets of a faceted or curved
   *    object do not chain into one plane;
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
-  *    or more planes join the one whose MDP band holds them (edge bands of bent normals);
+  *    or more planes join the one whose MDP band holds them (edge bands of bent normals), and samples
+  *    inside one plane join it if their normal passes its MND and they lie within 3 robust standard
+  *    deviations of it (the noise tail MDP cuts off);
   *  - robust normals are available, off by default for their cost (setNormalFit(TrimmedPlane)): the
   *    reweighted least-trimmed-squares plane of the same k-neighbourhood (pcl::rspd::refineNormalsTrimmed),
   *    so normals near an edge belong to one face instead of bending between two;
@@ -306,8 +308,9 @@ public:
   bool
   getCurvedPlaneCheck () const { return params_.curved_plane_check; }
 
-  /** \brief Last assignment pass once grow-merge is stable (default Edges; None = the paper): samples
-    * growth left out join a neighbouring plane by distance alone. See
+  /** \brief Last assignment pass once grow-merge is stable (default Tails; None = the paper): samples
+    * growth left out join a neighbouring plane: at edges by distance alone (Edges), and inside a
+    * plane also its noise tail (Tails). See
     * pcl::rspd::DetectorParameters::final_assignment. */
   void
   setFinalAssignment (pcl::rspd::FinalAssignment mode);
