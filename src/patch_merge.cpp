@@ -3,14 +3,19 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/patch_merge.h>
 
 #include <Eigen/Eigenvalues>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <unordered_set>
+#include <unordered_map>
 
 namespace pcl
 {
@@ -138,10 +143,21 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     }
     return sum;
   };
+  // Groups that failed the test, with each group's version (bumped when it grows): many pairs of
+  // patches span the same two groups (a wall's and a door's seeds along their common edge), and
+  // the answer only changes once either group does.
+  std::vector<std::uint32_t> version (patches.size (), 0);
+  std::unordered_map<std::uint64_t, std::uint64_t> failed;
   for (const auto& pr : pairs)
   {
     const std::uint32_t ra = sets.find (pr.first), rb = sets.find (pr.second);
     if (ra == rb)
+      continue;
+    const std::uint64_t groups = (static_cast<std::uint64_t> (std::min (ra, rb)) << 32) | std::max (ra, rb);
+    const std::uint64_t versions =
+      (static_cast<std::uint64_t> (version[std::min (ra, rb)]) << 32) | version[std::max (ra, rb)];
+    const auto known = failed.find (groups);
+    if (known != failed.end () && known->second == versions)
       continue;
     const bool a_leads = larger (representative[ra], representative[rb]);
     const std::uint32_t lead = a_leads ? ra : rb, other = a_leads ? rb : ra;
@@ -168,7 +184,10 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     {
       Eigen::Vector3d center, normal;
       if (!groupMoments (lead).plane (center, normal) || !coplanar (center, normal))
+      {
+        failed[groups] = versions;
         continue;
+      }
     }
     const std::uint32_t lead_rep = representative[lead];
     std::vector<std::uint32_t> joined;
@@ -179,6 +198,7 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     const std::uint32_t root = sets.find (ra);
     group[root].swap (joined);
     representative[root] = lead_rep;
+    ++version[root];
   }
 }
 } // namespace
@@ -193,36 +213,67 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
   if (num_patches < 2)
     return 0;
   UnionFind sets (num_patches);
-  // Pairs meeting M1-M3 (rules.coplanar only), each once: one boundary has many edges.
-  std::unordered_set<std::uint64_t> pair_keys;
-  // Every directed edge is visited once, which covers "an edge in either direction" (M1).
-  for (std::size_t i = 0; i < graph.size (); ++i)
+  // Pairs meeting M1-M3, each once: one boundary has many edges. Every directed edge is visited
+  // once, which covers "an edge in either direction" (M1). The scan runs in parallel: each thread
+  // keeps the pairs it found and those that failed M2 (a property of the two patches, so one
+  // evaluation per pair and thread); the union of the pair sets does not depend on the split, and
+  // uniteCoplanarGroups orders the pairs itself.
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (graph.size ());
+  const int threads = resolveThreads (rules.num_threads);
+  std::vector<std::vector<std::uint64_t>> found (static_cast<std::size_t> (threads));
+#pragma omp parallel num_threads(threads)
   {
-    const std::uint32_t a = labels[i];
-    if (a == kNoPatch || (flags && ((*flags)[i] & kInterior)))
-      continue;
-    bool interior = true;
-    graph.forEachNeighbor (i, [&] (std::uint32_t n) {
-      const std::uint32_t b = labels[n];
-      interior = interior && b == a;
-      if (b == kNoPatch || b == a || (!rules.coplanar && sets.find (a) == sets.find (b)))
-        return;
-      const PlanarPatch& pa = patches[a];
-      const PlanarPatch& pb = patches[b];
-      if (!normalsCompatible (pa, pb))                                        // M2
-        return;
-      if (pb.isInlier (points.points[i], points.normals[i]) ||                // M3
-          pa.isInlier (points.points[n], points.normals[n]))
-      {
-        if (rules.coplanar)
-          pair_keys.insert ((static_cast<std::uint64_t> (std::min (a, b)) << 32) | std::max (a, b));
-        else
-          sets.unite (a, b);
-      }
-    });
-    if (flags && interior)
-      (*flags)[i] |= kInterior | kSaturated;
+#ifdef _OPENMP
+    std::vector<std::uint64_t>& mine = found[static_cast<std::size_t> (omp_get_thread_num ())];
+#else
+    std::vector<std::uint64_t>& mine = found[0];
+#endif
+    std::unordered_map<std::uint64_t, bool> seen; // pair -> already found (true) or fails M2 (false)
+#pragma omp for schedule(static, 4096)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+    {
+      const std::uint32_t a = labels[i];
+      if (a == kNoPatch || (flags && ((*flags)[i] & kInterior)))
+        continue;
+      bool interior = true;
+      graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t nb) {
+        const std::uint32_t b = labels[nb];
+        interior = interior && b == a;
+        if (b == kNoPatch || b == a)
+          return;
+        const std::uint64_t key = (static_cast<std::uint64_t> (std::min (a, b)) << 32) | std::max (a, b);
+        const PlanarPatch& pa = patches[a];
+        const PlanarPatch& pb = patches[b];
+        auto it = seen.find (key);
+        if (it == seen.end ())
+        {
+          if (!normalsCompatible (pa, pb)) // M2
+          {
+            seen.emplace (key, false);
+            return;
+          }
+        }
+        else if (it->second || !normalsCompatible (pa, pb))
+          return;
+        if (pb.isInlier (points.points[i], points.normals[i]) || // M3
+            pa.isInlier (points.points[nb], points.normals[nb]))
+        {
+          seen[key] = true;
+          mine.push_back (key);
+        }
+      });
+      if (flags && interior)
+        (*flags)[i] |= kInterior | kSaturated;
+    }
   }
+  std::vector<std::uint64_t> pair_keys;
+  for (const auto& f : found)
+    pair_keys.insert (pair_keys.end (), f.begin (), f.end ());
+  std::sort (pair_keys.begin (), pair_keys.end ());
+  pair_keys.erase (std::unique (pair_keys.begin (), pair_keys.end ()), pair_keys.end ());
+  if (!rules.coplanar)
+    for (const auto key : pair_keys)
+      sets.unite (static_cast<std::uint32_t> (key >> 32), static_cast<std::uint32_t> (key & 0xffffffffu));
   if (rules.coplanar)
   {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -231,6 +282,7 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
       pairs.emplace_back (static_cast<std::uint32_t> (key >> 32), static_cast<std::uint32_t> (key & 0xffffffffu));
     uniteCoplanarGroups (points, patches, pairs, rules.max_outlier_ratio, sets);
   }
+
 
   // Representative of each group: the largest patch, ties by lowest member index.
   std::vector<std::uint32_t> representative (num_patches, kNoPatch);

@@ -299,6 +299,7 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
   MergeRules rules;
   rules.coplanar = params.coplanar_merge;
   rules.max_outlier_ratio = params.max_outlier_ratio;
+  rules.num_threads = params.num_threads;
   for (;;)
   {
     if (st.iterations >= params.max_iterations)

@@ -39,10 +39,12 @@ struct MergeRules
   bool coplanar = true;
   /** \brief T3's outlier ratio: M4 needs at least (1 - this) of the smaller group within the band. */
   double max_outlier_ratio = 0.25;
+  /** \brief OpenMP threads for the boundary scan (0: default); the result does not depend on it. */
+  int num_threads = 0;
 
   /** \brief The paper's M1-M3 and nothing else. */
   static MergeRules
-  paper () { return {false, 0.25}; }
+  paper () { return {false, 0.25, 0}; }
 };
 
 /** \brief Whether patches \a a and \a b may merge by M2: the angle between their normals is below
