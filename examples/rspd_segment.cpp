@@ -347,9 +347,10 @@ run (const Options& o)
     std::string per_scale;
     for (std::size_t s = 0; s < scales.samples_per_scale.size (); ++s)
       per_scale += (s ? " " : "") + std::to_string (scales.samples_per_scale[s]);
-    log ("normal scales: %zu samples unresolved at k, %zu from a wider scale, %zu unresolved at every scale%s; "
-         "per scale (k-neighbourhood among every 2^s-th sample): %s; resolved when lambda0/lambda1 < %.3f",
-         scales.unresolved_at_k, scales.widened (), scales.unresolved,
+    log ("normal scales: %zu samples unresolved at k (%zu of them passes most neighbours do not share), %zu from a wider scale, %zu "
+         "unresolved at every scale%s; per scale (k-neighbourhood among every 2^s-th sample): %s; resolved when "
+         "lambda0/lambda1 < %.3f",
+         scales.unresolved_at_k, scales.chance_resolved, scales.widened (), scales.unresolved,
          scales.widened_scales ? "" : " (no wider scale searched)", per_scale.c_str (), scales.isotropic_ratio);
   }
 

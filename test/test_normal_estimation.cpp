@@ -136,6 +136,27 @@ TEST (NormalEstimation, NoiseAsWideAsTheNeighbourhoodIsResolvedAtAWiderScale)
   EXPECT_LT (e.stats.unresolved, p.size () / 100);
 }
 
+TEST (NormalEstimation, PassesMostNeighboursDoNotShareAreWidenedToo)
+{
+  // Same regime: most k-neighbourhoods fill a slab as thick as they are wide, and the 5 %-level test
+  // still passes a share of them; such a sample, with most neighbours unresolved, is widened like
+  // them instead of keeping its noise-dominated normal (which then fails its plane's MND).
+  const Points p = noisySquare (20000, 0.04f, 3);
+  const Estimates e = estimateBoth (p, 50);
+  std::size_t inner = 0, bad = 0;
+  for (std::size_t i = 0; i < p.size (); ++i)
+    if (std::abs (p[i].x ()) < 0.4f && std::abs (p[i].y ()) < 0.4f)
+    {
+      ++inner;
+      bad += std::abs (e.adaptive[i].z ()) < std::cos (30.0 * kDegree);
+    }
+  std::printf ("    passes most neighbours do not share: %zu; inner samples off by > 30 deg: %zu of %zu\n",
+               e.stats.chance_resolved, bad, inner);
+  EXPECT_GT (e.stats.chance_resolved, 0u);
+  EXPECT_LE (e.stats.chance_resolved, e.stats.unresolved_at_k);
+  EXPECT_LT (bad, inner / 25); // 313 of 12,813 measured; 803 without the rule
+}
+
 TEST (NormalEstimation, AdaptiveScaleIsIndependentOfThreadCount)
 {
   const Points p = noisySquare (30000, 0.03f, 3);

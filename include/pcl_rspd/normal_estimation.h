@@ -49,6 +49,9 @@ struct NormalScaleStatistics
 {
   double isotropic_ratio = 0.0;     ///< the resolution test's bound on λ0/λ1 (for this k)
   std::size_t unresolved_at_k = 0;  ///< samples whose k-neighbourhood resolves no surface
+  /** \brief Of those, samples that passed the test while most of their neighbours did not (a chance
+    * pass; counted only where most samples are unresolved at k). */
+  std::size_t chance_resolved = 0;
   /** \brief [s]: samples whose normal comes from the k-neighbourhood among every 2^s-th sample; [0]:
     * the k-scale, including the samples no scale resolved and, when no wider scale was searched,
     * every sample. */
@@ -85,6 +88,10 @@ struct NormalScaleStatistics
   * filling a ball (no surface at that scale) stay under only 5 % of the time: the test rejects
   * "volume, not surface" at the 5 % level. Nothing else is a constant, and every quantity is a ratio or
   * a count, so the scale picked does not depend on units, position or orientation.
+  *
+  * Chance passes: where most samples are unresolved at the k-scale, a sample that passes the test
+  * while fewer than half of its graph neighbours do is counted unresolved too (the 5 % level passes
+  * one noise-dominated neighbourhood in twenty by chance).
   *
   * Each sample starts at scale 0. While unresolved it moves to the next scale, where it reads the
   * neighbourhood of its representative: of the two samples of every 2^(s+1)-th that bracket it in
