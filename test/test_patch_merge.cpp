@@ -184,3 +184,53 @@ TEST (PatchMerge, CoplanarGroupsStillJoinANoisierPartOfTheSamePlane)
   EXPECT_EQ (patches[0].members.size (), 500u);
   EXPECT_EQ (patches[0].mdp, 0.005); // the larger patch represents the group and keeps its plane
 }
+
+TEST (PatchMerge, ResultDoesNotDependOnTheThreadCount)
+{
+  // A floor and a wall, each seeded as a grid of tiles (many boundary edges, most pairs meeting
+  // M1-M3 several times over), plus a strip raised above the floor (M2 passes, M3 fails): enough
+  // samples that the parallel boundary scan gives both threads rows.
+  PointSet s;
+  std::vector<std::vector<std::uint32_t>> tiles;
+  std::vector<Eigen::Vector3d> centers, normals;
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b)
+    {
+      tiles.push_back (rspd_test::addRectangle (s, {0.1f * a + 0.0125f, 0.1f * b, 0}, {0.1f, 0, 0}, {0, 0.1f, 0}, 10, 10));
+      centers.emplace_back (0.1 * a + 0.06, 0.1 * b + 0.05, 0);
+      normals.emplace_back (0, 0, 1);
+    }
+  for (int b = 0; b < 8; ++b)
+    for (int c = 0; c < 4; ++c)
+    {
+      tiles.push_back (rspd_test::addRectangle (s, {0, 0.1f * b, 0.1f * c + 0.0125f}, {0, 0.1f, 0}, {0, 0, 0.1f}, 10, 10));
+      centers.emplace_back (0, 0.1 * b + 0.05, 0.1 * c + 0.06);
+      normals.emplace_back (1, 0, 0);
+    }
+  tiles.push_back (rspd_test::addRectangle (s, {0.8125f, 0, 0.05f}, {0.2f, 0, 0}, {0, 0.8f, 0}, 20, 80));
+  centers.emplace_back (0.91, 0.4, 0.05);
+  normals.emplace_back (0, 0, 1);
+  ASSERT_GT (s.size (), 2u * 4096u);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
+  std::vector<PlanarPatch> base;
+  for (std::size_t t = 0; t < tiles.size (); ++t)
+    base.push_back (rspd_test::makePatch (tiles[t], centers[t], normals[t], 0.01, 0.1));
+  for (const bool coplanar : {true, false})
+  {
+    std::vector<PlanarPatch> one = base, two = base;
+    auto l1 = labelSamples (s.size (), one), l2 = labelSamples (s.size (), two);
+    MergeRules r1, r2;
+    r1.coplanar = r2.coplanar = coplanar;
+    r1.num_threads = 1;
+    r2.num_threads = 2;
+    const std::size_t a1 = mergePatches (s, g, one, l1, nullptr, r1);
+    const std::size_t a2 = mergePatches (s, g, two, l2, nullptr, r2);
+    EXPECT_EQ (a1, a2);
+    EXPECT_EQ (l1, l2);
+    ASSERT_EQ (one.size (), two.size ());
+    for (std::size_t p = 0; p < one.size (); ++p)
+      EXPECT_EQ (one[p].members, two[p].members);
+    // Floor tiles into one, wall tiles into one, the raised strip apart.
+    EXPECT_EQ (one.size (), 3u) << (coplanar ? "M4" : "paper");
+  }
+}
