@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -51,9 +51,11 @@ const char* const kHelp =
     "                   default); ignored when the input has normals\n"
     "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
+    "  --rim-retest on|off  in the small-plane pass, a cell failing only T3 is tested again on\n"
+    "                   its inliers and may seed a plane (default on; off = it seeds nothing)\n"
     "  --normal-fit pca|trimmed   estimated normals by PCA over the k-neighbourhood (default, the\n"
     "                             paper) or from its reweighted least-trimmed-squares plane (more\n"
-    "                             accurate at edges, ~30x the normal stage's time)\n"
+    "                             accurate at edges, ~20x the normal stage's time)\n"
     "  --frame planes|axes        work along the dominant plane orientations (independent of how the\n"
     "                             cloud is rotated) or along its coordinate axes (the paper)\n"
     "  --outlier-seeds drop|keep  drop split seeds whose MND is an outlier among all seeds\n"
@@ -83,6 +85,7 @@ struct Options
   int threads = 0;  // 0: leave OpenMP's default
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
   bool coplanar_merge = true;
+  bool rim_retest = true;
   bool curved_check = false;
   bool drop_outlier_seeds = true;
   bool dominant_frame = true;
@@ -166,6 +169,8 @@ parseArguments (int argc, char** argv)
     }
     else if (arg == "--coplanar-merge")
       o.coplanar_merge = option.choice ("on", "off");
+    else if (arg == "--rim-retest")
+      o.rim_retest = option.choice ("on", "off");
     else if (arg == "--normal-fit")
       o.trimmed_normals = !option.choice ("pca", "trimmed");
     else if (arg == "--frame")
@@ -311,6 +316,7 @@ run (const Options& o)
   seg.setNumberOfNeighbours (o.k);
   seg.setNormalScale (o.normal_scale);
   seg.setCoplanarMerge (o.coplanar_merge);
+  seg.setRimCellRetest (o.rim_retest);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);
@@ -333,10 +339,11 @@ run (const Options& o)
                  (o.verbose ? std::string () : std::string (" (run with -v for details)")));
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
-  log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %d grow-merge iterations,"
-       " %zu re-estimations, %zu merges%s)",
+  log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
+       "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
-       stats.iterations, stats.reestimations, stats.merges, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges,
+       stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

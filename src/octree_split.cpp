@@ -20,8 +20,9 @@ namespace
 class OctreeSplitter
 {
 public:
-  OctreeSplitter (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>* subset)
-    : points_ (points), params_ (params)
+  OctreeSplitter (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>* subset,
+                  bool retest_rim_cells)
+    : points_ (points), params_ (params), retest_rim_cells_ (retest_rim_cells)
   {
     if (subset)
       order_ = *subset;
@@ -84,6 +85,21 @@ public:
     const std::vector<std::uint32_t> samples (order_.begin () + begin, order_.begin () + end);
     PlanarityResult r = robustPlanarityTest (points_, samples, params_);
     cells_tested_.fetch_add (1, std::memory_order_relaxed);
+    if (r.verdict == PlanarityVerdict::TooManyOutliers && retest_rim_cells_)
+    {
+      // The inliers of the cell's own estimate (the test drops them when it fails), tested again.
+      DetectorParameters any = params_;
+      any.max_outlier_ratio = 1.0;
+      any.min_patch_size = 0;
+      PlanarityResult inner = robustPlanarityTest (points_, samples, any);
+      if (inner.inliers.size () >= params_.min_patch_size)
+      {
+        const std::vector<std::uint32_t> inliers = std::move (inner.inliers);
+        r = robustPlanarityTest (points_, inliers, params_);
+        if (r.verdict == PlanarityVerdict::Planar)
+          rim_seeds_.fetch_add (1, std::memory_order_relaxed);
+      }
+    }
     if (r.verdict != PlanarityVerdict::Planar)
       return false;
     PlanarPatch patch;
@@ -111,6 +127,7 @@ public:
   }
 
   std::atomic<std::size_t> cells_tested_{0};
+  std::atomic<std::size_t> rim_seeds_{0};
 
 private:
   /** \brief Cells with at least this many samples split into tasks (a few hundred tasks for a
@@ -149,16 +166,17 @@ private:
 
   const PointSet& points_;
   const DetectorParameters& params_;
+  const bool retest_rim_cells_;
   std::vector<std::uint32_t> order_;
 };
 } // namespace
 
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats,
-            const std::vector<std::uint32_t>* subset)
+            const std::vector<std::uint32_t>* subset, bool retest_rim_cells, std::size_t* rim_seeds)
 {
   std::vector<PlanarPatch> patches;
-  OctreeSplitter splitter (points, params, subset);
+  OctreeSplitter splitter (points, params, subset, retest_rim_cells);
   if (splitter.size () == 0)
     return patches;
   Eigen::Vector3d lo;
@@ -172,6 +190,8 @@ splitPhase (const PointSet& points, const DetectorParameters& params, DetectorSt
     stats->cells_tested += splitter.cells_tested_;
     stats->seed_patches += patches.size ();
   }
+  if (rim_seeds)
+    *rim_seeds = splitter.rim_seeds_;
   return patches;
 }
 

@@ -365,7 +365,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         left.push_back (i);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
-    std::vector<PlanarPatch> seeds = splitPhase (points, small, &st, &left);
+    std::vector<PlanarPatch> seeds = splitPhase (points, small, &st, &left, params.rim_cell_retest, &st.rim_seeds);
     for (auto& seed : seeds)
     {
       if (seed.mnd > max_mnd)

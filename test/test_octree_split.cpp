@@ -154,3 +154,36 @@ TEST (OctreeSplit, DeterministicOrder)
   for (std::size_t i = 0; i < a.size (); ++i)
     EXPECT_EQ (a[i].members, b[i].members);
 }
+
+TEST (OctreeSplit, RimCellIsTestedAgainOnItsInliersOnlyWhenAsked)
+{
+  // A noisy square whose normals, along one side, bend by 40° over a band of a third of its
+  // samples (a neighbourhood reaching over the rim): T1 and T2 pass, T3 fails (33 % > 25 %). Only
+  // the root cell is tested, as a small-plane pass cell that cannot be split further.
+  PointSet s;
+  const auto square = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 30, 30, 0.002f, 4);
+  std::size_t bent = 0;
+  for (const auto i : square)
+    if (s.points[i].x () < 1.0f / 3.0f)
+    {
+      s.normals[i] = Eigen::Vector3f (std::sin (0.7f), 0.0f, std::cos (0.7f));
+      ++bent;
+    }
+  DetectorParameters params;
+  params.min_patch_size = square.size () / 2; // the inliers can reach it
+  params.max_octree_depth = 0;                // the root cell alone is tested
+  const PlanarityResult direct = robustPlanarityTest (s, square, params);
+  EXPECT_EQ (direct.verdict, PlanarityVerdict::TooManyOutliers);
+
+  std::size_t rim = 99;
+  EXPECT_TRUE (splitPhase (s, params, nullptr, nullptr, false, &rim).empty ());
+  EXPECT_EQ (rim, 0u);
+
+  const auto seeds = splitPhase (s, params, nullptr, nullptr, true, &rim);
+  ASSERT_EQ (seeds.size (), 1u);
+  EXPECT_EQ (rim, 1u);
+  EXPECT_GE (seeds[0].members.size (), (square.size () - bent) * 9 / 10);
+  for (const auto i : seeds[0].members)
+    EXPECT_GE (s.points[i].x (), 1.0f / 3.0f) << "a bent-normal sample seeded";
+  EXPECT_LT (seeds[0].mnd, 0.2);
+}

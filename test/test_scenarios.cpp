@@ -167,16 +167,26 @@ TEST (Scenario, RoomWithFurnitureDoorAndCurvedClutter)
 {
   // One viewpoint, density falling with distance; a door 2 cm proud of a wall; a pillar and a ball.
   const Detection r = detectScene ("room");
-  EXPECT_GE (r.score.found, 11); // all but the table's front panel
+  EXPECT_EQ (r.score.found, 12);
   EXPECT_EQ (r.score.false_planes, 0);
-  EXPECT_GE (r.score.f1, 0.98);
+  EXPECT_GE (r.score.f1, 0.99);
   EXPECT_LE (r.curved_claimed, 0.02); // issue 6: under 2 % of a curved surface claimed
+}
+
+TEST (Scenario, RoomsTablePanelNeedsTheRimRetest)
+{
+  // The table's front panel (0.7 m tall, under the top, over the floor): every small-plane cell of
+  // k + 1 samples holds a band of rim normals bent towards the top or the floor, so T3 fails; its
+  // inliers, tested again, seed it. Without: 11 of 12.
+  const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setRimCellRetest (false); };
+  const Detection r = detectScene ("room", {}, true, pcl::rspd::NormalScale::Automatic, off);
+  EXPECT_EQ (r.score.found, 11);
 }
 
 TEST (Scenario, TrimmedNormalsReachTheRoomsLastPlane)
 {
   // With trimmed-plane normals (an option, for its time) the normals at the room's edges stop
-  // bending, the table's front panel is seeded and all 12 planes are found (PCA normals: 11).
+  // bending and the table's front panel is seeded as a plain cell (PCA normals: by the rim retest).
   const auto trimmed = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setNormalFit (pcl::rspd::NormalFit::TrimmedPlane);
   };

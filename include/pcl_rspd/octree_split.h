@@ -30,11 +30,16 @@ namespace rspd
   * \param[out] stats cells tested and patches found are added (may be null)
   * \param[in] subset if given, the octree is built over these samples only (the root cell is their
   *            bounding cube); otherwise over all samples
+  * \param[in] retest_rim_cells a cell that passes T1 and T2 but fails T3 is tested again on its own
+  *            inliers, which seed a patch if they pass (DetectorParameters::rim_cell_retest; the
+  *            small-cell pass only, false = the paper)
+  * \param[out] rim_seeds patches found that way are counted here (may be null)
   * \return the patches, in depth-first octree order (deterministic)
   */
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr,
-            const std::vector<std::uint32_t>* subset = nullptr);
+            const std::vector<std::uint32_t>* subset = nullptr, bool retest_rim_cells = false,
+            std::size_t* rim_seeds = nullptr);
 
 } // namespace rspd
 } // namespace pcl

@@ -57,6 +57,12 @@ struct DetectorParameters
     * is no larger than the largest MND of the planes already found, grow-merge again, and drop every
     * plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a neighbour. */
   std::size_t small_cell_size = 0;
+  /** \brief Departure (small planes at a rim), used by the small-cell pass only: a cell that passes
+    * T1 and T2 but fails T3 is tested again on its own inliers, and seeds a plane if they pass. The
+    * pass's cells cannot shrink below k + 1 samples, and where a small plane meets others (a table's
+    * front panel under its top) every such cell holds a band of the rim's bent normals, more than
+    * T3's quarter; its inliers are the plane's clean part. false = such cells seed nothing. */
+  bool rim_cell_retest = true;
   /** \brief Departure (outlier seeds): after the split, a seed whose MND is an outlier among all
     * seeds (log MND above median + α·MAD of the seeds' log MND) is dropped before growth. A coarse
     * cell can pass T1-T3 when its extent dwarfs a thick mix of surfaces (a rotated facade: a cell
@@ -120,6 +126,7 @@ struct DetectorStatistics
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
   std::size_t merges = 0;            ///< patches absorbed by merging
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept
+  std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check
   bool hit_iteration_cap = false;

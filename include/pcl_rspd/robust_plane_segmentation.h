@@ -262,6 +262,16 @@ public:
   bool
   getSmallPlaneSeeding () const { return small_plane_seeding_; }
 
+  /** \brief Rim cells in the small-plane pass (default true; false = they seed nothing): a cell that
+    * passes T1 and T2 but fails T3 is tested again on its own inliers, which seed a plane if they
+    * pass — where a small plane meets others, every cell of k + 1 samples holds a band of bent
+    * normals along its rim. See pcl::rspd::DetectorParameters::rim_cell_retest. */
+  void
+  setRimCellRetest (bool enable);
+  /** \brief Whether rim cells are tested again on their inliers. */
+  bool
+  getRimCellRetest () const { return params_.rim_cell_retest; }
+
   /** \brief M4, coplanar groups (default true; false = the paper's transitive M1-M3): a group joins
     * another only if most of its samples lie in the distance band of the plane the merged group
     * keeps. See pcl::rspd::DetectorParameters::coplanar_merge. */

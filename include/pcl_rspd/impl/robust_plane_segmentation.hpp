@@ -292,6 +292,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSmallPlaneSeeding (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setRimCellRetest (bool enable)
+{
+  params_.rim_cell_retest = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 {
   params_.coplanar_merge = enable;
