@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -53,6 +53,9 @@ const char* const kHelp =
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
     "  --rim-retest on|off  in the small-plane pass, a cell failing only T3 is tested again on\n"
     "                   its inliers and may seed a plane (default on; off = it seeds nothing)\n"
+    "  --release on|off once growth is stable, members farther than 3 robust sigma from their\n"
+    "                   plane are offered to the neighbouring planes (default on; off = the paper:\n"
+    "                   members are never revoked)\n"
     "  --normal-fit pca|trimmed   estimated normals by PCA over the k-neighbourhood (default, the\n"
     "                             paper) or from its reweighted least-trimmed-squares plane (more\n"
     "                             accurate at edges, ~20x the normal stage's time)\n"
@@ -86,6 +89,7 @@ struct Options
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
   bool coplanar_merge = true;
   bool rim_retest = true;
+  bool release = true;
   bool curved_check = false;
   bool drop_outlier_seeds = true;
   bool dominant_frame = true;
@@ -171,6 +175,8 @@ parseArguments (int argc, char** argv)
       o.coplanar_merge = option.choice ("on", "off");
     else if (arg == "--rim-retest")
       o.rim_retest = option.choice ("on", "off");
+    else if (arg == "--release")
+      o.release = option.choice ("on", "off");
     else if (arg == "--normal-fit")
       o.trimmed_normals = !option.choice ("pca", "trimmed");
     else if (arg == "--frame")
@@ -317,6 +323,7 @@ run (const Options& o)
   seg.setNormalScale (o.normal_scale);
   seg.setCoplanarMerge (o.coplanar_merge);
   seg.setRimCellRetest (o.rim_retest);
+  seg.setFarMemberRelease (o.release);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);
@@ -340,10 +347,11 @@ run (const Options& o)
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
-       "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges%s)",
+       "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
+       "%zu far members released and %zu of them given back%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
-       stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges,
-       stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
+       stats.restored, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

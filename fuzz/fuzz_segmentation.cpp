@@ -20,7 +20,8 @@
  *   8    epsilon (3 + b8 % 40 when flag 8); if b8 & 128, grow-merge cap 1 + (b8 >> 5 & 3)
  *   9    sensor origin (b9 & 3); b9 & 4: setSmallPlaneSeeding (false); b9 & 8: setNormalScale (Adaptive,
  *        or Automatic with b9 & 16); b9 & 32: setCoplanarMerge (false), setDropOutlierSeeds (false),
- *        setDetectionFrame (InputAxes), setNormalFit (Pca) and setRimCellRetest (false);
+ *        setDetectionFrame (InputAxes), setNormalFit (Pca), setRimCellRetest (false) and
+ *        setFarMemberRelease (false);
  *        b9 & 64: setCurvedPlaneCheck (true) and setNormalFit (TrimmedPlane); b9 & 128: setFinalAssignment (All;
  *        None with b9 & 32, else Edges with b9 & 64; the default is Tails)
  *   10   slopes of the tilted plane
@@ -236,6 +237,7 @@ configure (Seg& seg, int k, std::uint8_t flags, std::uint8_t b8, std::uint8_t or
     seg.setDetectionFrame (pcl::rspd::DetectionFrame::InputAxes);
     seg.setNormalFit (pcl::rspd::NormalFit::Pca);
     seg.setRimCellRetest (false);
+    seg.setFarMemberRelease (false);
   }
   if (origin_code & 64)
   {

@@ -24,6 +24,27 @@ namespace rspd
 {
 namespace
 {
+/** Robust standard deviations that bound a plane's noise (a Gaussian's 3 σ: 99.7 %). */
+constexpr double kBandSigmas = 3.0;
+
+/** Each patch's distance bound for its own samples: max(MDP, 3 σ), σ = 1.4826 median |d| of its
+  * members about its plane. MDP = median + α MAD of |d| (Eq. 6) is about 2.45 σ on Gaussian noise. */
+std::vector<double>
+noiseBands (const PointSet& points, const DetectorParameters& params, const std::vector<PlanarPatch>& patches)
+{
+  std::vector<double> band (patches.size ());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
+  for (std::ptrdiff_t l = 0; l < static_cast<std::ptrdiff_t> (patches.size ()); ++l)
+  {
+    const PlanarPatch& patch = patches[l];
+    std::vector<float> d (patch.members.size ());
+    for (std::size_t t = 0; t < d.size (); ++t)
+      d[t] = static_cast<float> (std::abs ((points.points[patch.members[t]].cast<double> () - patch.center).dot (patch.normal)));
+    band[l] = d.empty () ? patch.mdp : std::max (patch.mdp, kBandSigmas * kMadScale * medianInPlace (d));
+  }
+  return band;
+}
+
 /** Sec. 3.5: re-estimate C, N, MDP and MND of every patch that grew by more than the update ratio
   * since its last estimate. Members are kept; T1-T3 are not re-run. \return patches updated */
 std::size_t
@@ -68,19 +89,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   const bool edges_only = params.final_assignment == FinalAssignment::Edges ||
                           params.final_assignment == FinalAssignment::Tails;
   const bool tails = params.final_assignment == FinalAssignment::Tails;
-  std::vector<double> tail_limit (tails ? patches.size () : 0);
-  if (tails)
-  {
-#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
-    for (std::ptrdiff_t l = 0; l < static_cast<std::ptrdiff_t> (patches.size ()); ++l)
-    {
-      const PlanarPatch& patch = patches[l];
-      std::vector<float> d (patch.members.size ());
-      for (std::size_t t = 0; t < d.size (); ++t)
-        d[t] = static_cast<float> (std::abs ((points.points[patch.members[t]].cast<double> () - patch.center).dot (patch.normal)));
-      tail_limit[l] = std::max (patch.mdp, 3.0 * kMadScale * medianInPlace (d));
-    }
-  }
+  const std::vector<double> tail_limit = tails ? noiseBands (points, params, patches) : std::vector<double> ();
   std::vector<std::uint32_t> left;
   for (std::uint32_t i = 0; i < labels.size (); ++i)
     if (labels[i] == kNoPatch)
@@ -290,6 +299,30 @@ dropOutlierSeeds (const DetectorParameters& params, std::vector<PlanarPatch>& se
   return before - seeds.size ();
 }
 
+/** Departure (far members), see DetectorParameters::release_far_members: members farther from their
+  * plane's last estimate than its noise band leave it. \return (sample, a member its plane keeps)
+  * per sample released, in patch order */
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+releaseFarMembers (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+{
+  const std::vector<double> band = noiseBands (points, params, patches);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> released;
+  for (std::size_t l = 0; l < patches.size (); ++l)
+  {
+    PlanarPatch& patch = patches[l];
+    std::vector<std::uint32_t> kept, far;
+    kept.reserve (patch.members.size ());
+    for (const auto m : patch.members)
+      (std::abs ((points.points[m].cast<double> () - patch.center).dot (patch.normal)) <= band[l] ? kept : far).push_back (m);
+    if (far.empty () || kept.empty ())
+      continue;
+    for (const auto m : far)
+      released.emplace_back (m, kept.front ());
+    patch.members.swap (kept);
+  }
+  return released;
+}
+
 /** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
 void
 growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
@@ -381,6 +414,76 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       patches.erase (std::remove_if (patches.begin (), patches.end (),
                                      [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
                      patches.end ());
+    }
+  }
+
+  if (params.release_far_members && !patches.empty ())
+  {
+    // Far members (departure, see DetectorParameters::release_far_members): released, offered to
+    // the neighbouring planes, and given back where no other plane took or borders them.
+    const auto released = releaseFarMembers (points, params, patches);
+    st.released = released.size ();
+    if (!released.empty ())
+    {
+      labels = labelSamples (points.size (), patches);
+      // Growth restricted to the released samples: in rounds that read the round before, each joins
+      // the neighbouring plane whose inlier test (Sec. 3.3) it passes, nearest relative to MDP.
+      std::vector<std::uint32_t> open;
+      for (const auto& r : released)
+        open.push_back (r.first);
+      std::vector<std::uint32_t> choice (open.size ());
+      for (;;)
+      {
+#pragma omp parallel for schedule(dynamic, 256) num_threads(resolveThreads (params.num_threads))
+        for (std::ptrdiff_t j = 0; j < static_cast<std::ptrdiff_t> (open.size ()); ++j)
+        {
+          const std::uint32_t i = open[j];
+          choice[j] = kNoPatch;
+          double best = HUGE_VAL;
+          graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+            const std::uint32_t l = labels[n];
+            if (l == kNoPatch || !patches[l].isInlier (points.points[i], points.normals[i]))
+              return;
+            const double r = std::abs ((points.points[i].cast<double> () - patches[l].center).dot (patches[l].normal)) / patches[l].mdp;
+            if (r < best || (r == best && l < choice[j]))
+            {
+              best = r;
+              choice[j] = l;
+            }
+          });
+        }
+        std::size_t kept = 0, added = 0;
+        for (std::size_t j = 0; j < open.size (); ++j)
+        {
+          if (choice[j] == kNoPatch)
+          {
+            open[kept++] = open[j];
+            continue;
+          }
+          labels[open[j]] = choice[j];
+          patches[choice[j]].members.push_back (open[j]);
+          ++added;
+        }
+        open.resize (kept);
+        choice.resize (kept);
+        if (added == 0)
+          break;
+      }
+      for (const auto& [sample, anchor] : released)
+      {
+        const std::uint32_t home = labels[anchor];
+        if (labels[sample] != kNoPatch || home == kNoPatch)
+          continue;
+        bool bordered = false;
+        graph.forEachNeighbor (sample, [&] (std::uint32_t j) {
+          bordered = bordered || (labels[j] != kNoPatch && labels[j] != home);
+        });
+        if (bordered)
+          continue; // left to the last assignment, which weighs both planes
+        labels[sample] = home;
+        patches[home].members.push_back (sample);
+        ++st.restored;
+      }
     }
   }
 

@@ -169,7 +169,7 @@ TEST (Scenario, RoomWithFurnitureDoorAndCurvedClutter)
   const Detection r = detectScene ("room");
   EXPECT_EQ (r.score.found, 12);
   EXPECT_EQ (r.score.false_planes, 0);
-  EXPECT_GE (r.score.f1, 0.99);
+  EXPECT_GE (r.score.f1, 0.995); // issue 6's target for the room (0.996 measured)
   EXPECT_LE (r.curved_claimed, 0.02); // issue 6: under 2 % of a curved surface claimed
 }
 
@@ -181,6 +181,17 @@ TEST (Scenario, RoomsTablePanelNeedsTheRimRetest)
   const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setRimCellRetest (false); };
   const Detection r = detectScene ("room", {}, true, pcl::rspd::NormalScale::Automatic, off);
   EXPECT_EQ (r.score.found, 11);
+}
+
+TEST (Scenario, RoomsDoorNeedsTheFarMemberRelease)
+{
+  // The door stands 2 cm proud of its wall (about 4 σ of the wall's noise). The wall's growth takes
+  // part of the door under an early estimate and never gives it back; released as far from the
+  // wall's final plane, the door's own growth takes it (F1 0.992 -> 0.996 measured).
+  const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setFarMemberRelease (false); };
+  const Detection r = detectScene ("room", {}, true, pcl::rspd::NormalScale::Automatic, off);
+  EXPECT_EQ (r.score.found, 12);
+  EXPECT_LT (r.score.f1, 0.994);
 }
 
 TEST (Scenario, TrimmedNormalsReachTheRoomsLastPlane)

@@ -84,6 +84,16 @@ struct DetectorParameters
     * sample most of whose neighbours hold one plane, if its normal passes that plane's MND and
     * |d| <= 3 σ of the plane (σ = 1.4826 median |d| of its members). */
   FinalAssignment final_assignment = FinalAssignment::Tails;
+  /** \brief Departure (far members): once grow-merge and the small-plane pass are stable, members
+    * farther from their plane's last estimate than max(MDP, 3 σ) (σ = 1.4826 median |d| of its
+    * members) are released; growth restricted to them follows (rounds reading the round before: a
+    * released sample joins the neighbouring plane whose inlier test of Sec. 3.3 it passes, nearest
+    * relative to MDP), and a released sample no plane took and no other plane borders goes back to
+    * its plane. Growth tests a
+    * sample against the estimate of the moment, which later re-estimates move: a wall seeded over a
+    * door 2 cm proud of it keeps the door's samples otherwise. false = members are never revoked
+    * (the paper). */
+  bool release_far_members = true;
   /** \brief Departure (residual pattern, the paper's Sec. 5 suggestion): once grow-merge is stable,
     * a quadric w = f(u, v) is fitted to each plane's samples over its least-squares plane
     * (measureCurvature), and the plane is dropped as a facet of a curved surface (pipe, tank, pillar,
@@ -126,6 +136,8 @@ struct DetectorStatistics
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
   std::size_t merges = 0;            ///< patches absorbed by merging
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept
+  std::size_t released = 0;          ///< members released as far from their plane (release_far_members)
+  std::size_t restored = 0;          ///< of those, given back to their plane
   std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check

@@ -88,6 +88,8 @@ struct RobustPlane
   *    only when most of the smaller one lies in the distance band of the plane the union keeps (or
   *    of the least-squares plane of the larger group's samples), so facets of a faceted or curved
   *    object do not chain into one plane;
+  *  - far members (setFarMemberRelease(false) for the paper): members farther from their plane's
+  *    final estimate than its noise band are offered to the neighbouring planes;
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals), and samples
   *    inside one plane join it if their normal passes its MND and they lie within 3 robust standard
@@ -271,6 +273,16 @@ public:
   /** \brief Whether rim cells are tested again on their inliers. */
   bool
   getRimCellRetest () const { return params_.rim_cell_retest; }
+
+  /** \brief Far members (default true; false = the paper, members are never revoked): once
+    * grow-merge is stable, members farther from their plane's last estimate than its noise band
+    * (max(MDP, 3 robust σ)) are released, a neighbouring plane whose inlier test they pass takes
+    * them, and the rest go back unless another plane borders them. See pcl::rspd::DetectorParameters::release_far_members. */
+  void
+  setFarMemberRelease (bool enable);
+  /** \brief Whether far members are released. */
+  bool
+  getFarMemberRelease () const { return params_.release_far_members; }
 
   /** \brief M4, coplanar groups (default true; false = the paper's transitive M1-M3): a group joins
     * another only if most of its samples lie in the distance band of the plane the merged group

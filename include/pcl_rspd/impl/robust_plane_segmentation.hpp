@@ -299,6 +299,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setRimCellRetest (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setFarMemberRelease (bool enable)
+{
+  params_.release_far_members = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 {
   params_.coplanar_merge = enable;
