@@ -323,6 +323,76 @@ releaseFarMembers (const PointSet& points, const DetectorParameters& params, std
   return released;
 }
 
+/** The rest of the far-member departure: growth restricted to the \a released samples (in rounds
+  * that read the round before, each joins the neighbouring plane whose inlier test of Sec. 3.3 it
+  * passes, nearest relative to MDP), then a released sample that no plane took and no other plane
+  * borders goes back to the plane of its anchor (a member that plane kept). \return samples given back */
+std::size_t
+offerReleasedSamples (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                      const std::vector<std::pair<std::uint32_t, std::uint32_t>>& released,
+                      std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+{
+  std::vector<std::uint32_t> open;
+  for (const auto& r : released)
+    open.push_back (r.first);
+  std::vector<std::uint32_t> choice (open.size ());
+  for (;;)
+  {
+#pragma omp parallel for schedule(dynamic, 256) num_threads(resolveThreads (params.num_threads))
+    for (std::ptrdiff_t j = 0; j < static_cast<std::ptrdiff_t> (open.size ()); ++j)
+    {
+      const std::uint32_t i = open[j];
+      const Eigen::Vector3d p = points.points[i].cast<double> ();
+      choice[j] = kNoPatch;
+      double best = HUGE_VAL;
+      graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+        const std::uint32_t l = labels[n];
+        if (l == kNoPatch || !patches[l].isInlier (points.points[i], points.normals[i]))
+          return;
+        const double r = std::abs ((p - patches[l].center).dot (patches[l].normal)) / patches[l].mdp;
+        if (r < best || (r == best && l < choice[j]))
+        {
+          best = r;
+          choice[j] = l;
+        }
+      });
+    }
+    std::size_t kept = 0, added = 0;
+    for (std::size_t j = 0; j < open.size (); ++j)
+    {
+      if (choice[j] == kNoPatch)
+      {
+        open[kept++] = open[j];
+        continue;
+      }
+      labels[open[j]] = choice[j];
+      patches[choice[j]].members.push_back (open[j]);
+      ++added;
+    }
+    open.resize (kept);
+    choice.resize (kept);
+    if (added == 0)
+      break;
+  }
+  std::size_t restored = 0;
+  for (const auto& [sample, anchor] : released)
+  {
+    const std::uint32_t home = labels[anchor];
+    if (labels[sample] != kNoPatch || home == kNoPatch)
+      continue;
+    bool bordered = false;
+    graph.forEachNeighbor (sample, [&] (std::uint32_t j) {
+      bordered = bordered || (labels[j] != kNoPatch && labels[j] != home);
+    });
+    if (bordered)
+      continue; // left to the last assignment, which weighs both planes
+    labels[sample] = home;
+    patches[home].members.push_back (sample);
+    ++restored;
+  }
+  return restored;
+}
+
 /** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
 void
 growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
@@ -426,64 +496,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     if (!released.empty ())
     {
       labels = labelSamples (points.size (), patches);
-      // Growth restricted to the released samples: in rounds that read the round before, each joins
-      // the neighbouring plane whose inlier test (Sec. 3.3) it passes, nearest relative to MDP.
-      std::vector<std::uint32_t> open;
-      for (const auto& r : released)
-        open.push_back (r.first);
-      std::vector<std::uint32_t> choice (open.size ());
-      for (;;)
-      {
-#pragma omp parallel for schedule(dynamic, 256) num_threads(resolveThreads (params.num_threads))
-        for (std::ptrdiff_t j = 0; j < static_cast<std::ptrdiff_t> (open.size ()); ++j)
-        {
-          const std::uint32_t i = open[j];
-          choice[j] = kNoPatch;
-          double best = HUGE_VAL;
-          graph.forEachNeighbor (i, [&] (std::uint32_t n) {
-            const std::uint32_t l = labels[n];
-            if (l == kNoPatch || !patches[l].isInlier (points.points[i], points.normals[i]))
-              return;
-            const double r = std::abs ((points.points[i].cast<double> () - patches[l].center).dot (patches[l].normal)) / patches[l].mdp;
-            if (r < best || (r == best && l < choice[j]))
-            {
-              best = r;
-              choice[j] = l;
-            }
-          });
-        }
-        std::size_t kept = 0, added = 0;
-        for (std::size_t j = 0; j < open.size (); ++j)
-        {
-          if (choice[j] == kNoPatch)
-          {
-            open[kept++] = open[j];
-            continue;
-          }
-          labels[open[j]] = choice[j];
-          patches[choice[j]].members.push_back (open[j]);
-          ++added;
-        }
-        open.resize (kept);
-        choice.resize (kept);
-        if (added == 0)
-          break;
-      }
-      for (const auto& [sample, anchor] : released)
-      {
-        const std::uint32_t home = labels[anchor];
-        if (labels[sample] != kNoPatch || home == kNoPatch)
-          continue;
-        bool bordered = false;
-        graph.forEachNeighbor (sample, [&] (std::uint32_t j) {
-          bordered = bordered || (labels[j] != kNoPatch && labels[j] != home);
-        });
-        if (bordered)
-          continue; // left to the last assignment, which weighs both planes
-        labels[sample] = home;
-        patches[home].members.push_back (sample);
-        ++st.restored;
-      }
+      st.restored = offerReleasedSamples (points, graph, params, released, patches, labels);
     }
   }
 
