@@ -88,13 +88,9 @@ public:
     if (r.verdict == PlanarityVerdict::TooManyOutliers && retest_rim_cells_)
     {
       // The inliers of the cell's own estimate (the test drops them when it fails), tested again.
-      DetectorParameters any = params_;
-      any.max_outlier_ratio = 1.0;
-      any.min_patch_size = 0;
-      PlanarityResult inner = robustPlanarityTest (points_, samples, any);
-      if (inner.inliers.size () >= params_.min_patch_size)
+      const std::vector<std::uint32_t> inliers = intervalInliers (points_, samples, r.estimate);
+      if (inliers.size () >= params_.min_patch_size)
       {
-        const std::vector<std::uint32_t> inliers = std::move (inner.inliers);
         r = robustPlanarityTest (points_, inliers, params_);
         if (r.verdict == PlanarityVerdict::Planar)
           rim_seeds_.fetch_add (1, std::memory_order_relaxed);

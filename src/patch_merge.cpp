@@ -143,21 +143,10 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     }
     return sum;
   };
-  // Groups that failed the test, with each group's version (bumped when it grows): many pairs of
-  // patches span the same two groups (a wall's and a door's seeds along their common edge), and
-  // the answer only changes once either group does.
-  std::vector<std::uint32_t> version (patches.size (), 0);
-  std::unordered_map<std::uint64_t, std::uint64_t> failed;
   for (const auto& pr : pairs)
   {
     const std::uint32_t ra = sets.find (pr.first), rb = sets.find (pr.second);
     if (ra == rb)
-      continue;
-    const std::uint64_t groups = (static_cast<std::uint64_t> (std::min (ra, rb)) << 32) | std::max (ra, rb);
-    const std::uint64_t versions =
-      (static_cast<std::uint64_t> (version[std::min (ra, rb)]) << 32) | version[std::max (ra, rb)];
-    const auto known = failed.find (groups);
-    if (known != failed.end () && known->second == versions)
       continue;
     const bool a_leads = larger (representative[ra], representative[rb]);
     const std::uint32_t lead = a_leads ? ra : rb, other = a_leads ? rb : ra;
@@ -184,10 +173,7 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     {
       Eigen::Vector3d center, normal;
       if (!groupMoments (lead).plane (center, normal) || !coplanar (center, normal))
-      {
-        failed[groups] = versions;
         continue;
-      }
     }
     const std::uint32_t lead_rep = representative[lead];
     std::vector<std::uint32_t> joined;
@@ -198,7 +184,6 @@ uniteCoplanarGroups (const PointSet& points, const std::vector<PlanarPatch>& pat
     const std::uint32_t root = sets.find (ra);
     group[root].swap (joined);
     representative[root] = lead_rep;
-    ++version[root];
   }
 }
 } // namespace

@@ -137,6 +137,24 @@ estimatePlane (const PointSet& points, const std::vector<std::uint32_t>& samples
   return true;
 }
 
+std::vector<std::uint32_t>
+intervalInliers (const PointSet& points, const std::vector<std::uint32_t>& samples, const PlaneEstimate& e)
+{
+  // T3: a sample is an outlier when outside either two-sided interval (Eqs. 6 and 9).
+  const double d_lo = e.distance_median - e.distance_halfwidth, d_hi = e.mdp ();
+  const double a_lo = e.angle_median - e.angle_halfwidth, a_hi = e.mnd ();
+  std::vector<std::uint32_t> inliers;
+  inliers.reserve (samples.size ());
+  for (const auto s : samples)
+  {
+    const double d = std::abs ((points.points[s].cast<double> () - e.center).dot (e.normal));
+    const double a = std::acos (std::min (1.0, std::abs (points.normals[s].cast<double> ().dot (e.normal))));
+    if (d >= d_lo && d <= d_hi && a >= a_lo && a <= a_hi)
+      inliers.push_back (s);
+  }
+  return inliers;
+}
+
 PlanarityResult
 robustPlanarityTest (const PointSet& points, const std::vector<std::uint32_t>& samples,
                      const DetectorParameters& params)
@@ -152,17 +170,7 @@ robustPlanarityTest (const PointSet& points, const std::vector<std::uint32_t>& s
   // T1: F = 0.5·max(w, l)·U + MDP·N with U ⟂ N, so angle(F, N) = atan2(0.5·max(w, l), MDP).
   result.distance_angle = std::atan2 (0.5 * std::max (e.width, e.length), e.mdp ());
 
-  // T3: a sample is an outlier when outside either two-sided interval (Eqs. 6 and 9).
-  const double d_lo = e.distance_median - e.distance_halfwidth, d_hi = e.mdp ();
-  const double a_lo = e.angle_median - e.angle_halfwidth, a_hi = e.mnd ();
-  result.inliers.reserve (samples.size ());
-  for (const auto s : samples)
-  {
-    const double d = std::abs ((points.points[s].cast<double> () - e.center).dot (e.normal));
-    const double a = std::acos (std::min (1.0, std::abs (points.normals[s].cast<double> ().dot (e.normal))));
-    if (d >= d_lo && d <= d_hi && a >= a_lo && a <= a_hi)
-      result.inliers.push_back (s);
-  }
+  result.inliers = intervalInliers (points, samples, e);
   result.outlier_ratio = 1.0 - static_cast<double> (result.inliers.size ()) / static_cast<double> (samples.size ());
 
   if (!(result.distance_angle > params.min_distance_angle))

@@ -69,6 +69,30 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
   }
   return updated;
 }
+/** One round of a pass that offers unlabelled samples to planes: sample open[j] joins plane
+  * choice[j] (kNoPatch: stays open); the samples left open and their choices are compacted to the
+  * front. \return samples that joined a plane */
+std::size_t
+applyChoices (std::vector<std::uint32_t>& open, std::vector<std::uint32_t>& choice, std::vector<PlanarPatch>& patches,
+              std::vector<std::uint32_t>& labels)
+{
+  std::size_t kept = 0;
+  for (std::size_t j = 0; j < open.size (); ++j)
+  {
+    if (choice[j] == kNoPatch)
+    {
+      open[kept++] = open[j];
+      continue;
+    }
+    labels[open[j]] = choice[j];
+    patches[choice[j]].members.push_back (open[j]);
+  }
+  const std::size_t added = open.size () - kept;
+  open.resize (kept);
+  choice.resize (kept);
+  return added;
+}
+
 /** Last assignment pass (departure, DetectorParameters::final_assignment): a sample no patch holds
   * joins the plane of a graph neighbour whose distance band it lies in (|d| <= MDP; the nearest
   * relative to MDP when several do, ties to the lower label), provided it is also among that
@@ -149,19 +173,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
         choice[j] = l;
       });
     }
-    std::size_t kept = 0, added = 0;
-    for (std::size_t j = 0; j < left.size (); ++j)
-    {
-      if (choice[j] == kNoPatch)
-      {
-        left[kept++] = left[j];
-        continue;
-      }
-      labels[left[j]] = choice[j];
-      patches[choice[j]].members.push_back (left[j]);
-      ++added;
-    }
-    left.resize (kept);
+    const std::size_t added = applyChoices (left, choice, patches, labels);
     assigned += added;
     if (added == 0)
       return assigned;
@@ -357,21 +369,7 @@ offerReleasedSamples (const PointSet& points, const NeighborGraph& graph, const 
         }
       });
     }
-    std::size_t kept = 0, added = 0;
-    for (std::size_t j = 0; j < open.size (); ++j)
-    {
-      if (choice[j] == kNoPatch)
-      {
-        open[kept++] = open[j];
-        continue;
-      }
-      labels[open[j]] = choice[j];
-      patches[choice[j]].members.push_back (open[j]);
-      ++added;
-    }
-    open.resize (kept);
-    choice.resize (kept);
-    if (added == 0)
+    if (applyChoices (open, choice, patches, labels) == 0)
       break;
   }
   std::size_t restored = 0;

@@ -1011,7 +1011,8 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
       {"--no-such-option"}, {"-k"}, {"-k", "abc"}, {"-k", "1"}, {"--threads", "0"}, {"--threads", "x"},
       {"a.pcd", "b.pcd"}, {"--demo", "a.pcd"}, {"--png-size", "12"}, {"--demo=1"}, {"-o"},
       {"--coplanar-merge", "yes"}, {"--coplanar-merge"}, {"--outlier-seeds=on"}, {"--frame", "x"}, {"--frame"}, {"--normal-fit", "mcd"}, {"--normal-fit"}, {"--curved-check", "1"},
-      {"--assign", "some"}, {"--assign"},
+      {"--assign", "some"}, {"--assign"}, {"--assign", "tail"}, {"--rim-retest", "yes"}, {"--rim-retest"},
+      {"--release", "1"}, {"--release"},
   };
   for (const auto& args : cases)
   {

@@ -92,6 +92,11 @@ struct PlanarityResult
   std::vector<std::uint32_t> inliers;     ///< the samples kept when Planar
 };
 
+/** \brief The samples of \a samples inside both of \a estimate's intervals I_D and I_Φ (Eqs. 6 and 9):
+  * T3's inliers. */
+std::vector<std::uint32_t>
+intervalInliers (const PointSet& points, const std::vector<std::uint32_t>& samples, const PlaneEstimate& estimate);
+
 /** \brief The robust planarity test of Sec. 3.2 on the samples of one cell. */
 PlanarityResult
 robustPlanarityTest (const PointSet& points, const std::vector<std::uint32_t>& samples,
