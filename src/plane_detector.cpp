@@ -2,6 +2,7 @@
  * pcl_rspd: the pipeline of Sec. 3 — split, then grow and merge until every patch is stable.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <pcl_rspd/edge_sides.h>
 #include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/octree_split.h>
 #include <pcl_rspd/patch_growth.h>
@@ -179,6 +180,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
       return assigned;
   }
 }
+
 
 } // namespace
 
@@ -505,6 +507,18 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   {
     labels = labelSamples (points.size (), patches); // the small-plane pass may have dropped patches
     st.assigned = assignRemainingSamples (points, graph, params, patches, labels);
+  }
+
+  if (params.edge_sides && patches.size () >= 2)
+  {
+    labels = labelSamples (points.size (), patches);
+    const EdgeSideCounts c = settleEdgeSides (points, graph, noiseBands (points, params, patches),
+                                              params.num_threads, patches, labels);
+    st.edge_moved = c.moved;
+    st.edge_released = c.released;
+    patches.erase (std::remove_if (patches.begin (), patches.end (),
+                                   [] (const PlanarPatch& p) { return p.members.empty (); }),
+                   patches.end ());
   }
 
   st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();

@@ -153,6 +153,20 @@ TEST (Scenario, StaircaseOfSmallParallelPlanesEveryPlaneFound)
   EXPECT_GE (r.score.f1, 0.96);
 }
 
+TEST (Scenario, StaircaseEdgeSamplesKeepToTheirSide)
+{
+  // Within noise of a step's nose, growth gives a riser sample pushed out of the step to the tread
+  // (or the reverse), which puts the tread in voxels it never enters. The edge-side rule moves
+  // them: F1 0.978 -> 0.989, precision 0.980 -> 0.997 measured.
+  const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setEdgeSides (false); };
+  const Detection without = detectScene ("staircase", {}, true, pcl::rspd::NormalScale::Automatic, off);
+  const Detection with = detectScene ("staircase");
+  EXPECT_LT (without.score.f1, 0.982);
+  EXPECT_GE (with.score.f1, 0.986);
+  EXPECT_GE (with.score.precision, 0.995);
+  EXPECT_EQ (with.score.found, 30);
+}
+
 TEST (Scenario, StaircaseWithThePapersSingleSplitMissesRisers)
 {
   // Algorithm 1 alone seeds a riser only where an ε-sample cell holds it without tread: every such

@@ -202,6 +202,8 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_FALSE (room == labels ("r.pcd", "room_rim_off.pcd", {"--rim-retest=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_release_on.pcd", {"--release", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_release_off.pcd", {"--release=off"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_sides_on.pcd", {"--edge-sides", "on"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_sides_off.pcd", {"--edge-sides=off"}));
   const std::string industrial = labels ("i.pcd", "ind.pcd", {"--outlier-seeds", "keep"});
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_curved.pcd", {"--outlier-seeds", "keep", "--curved-check", "on"}));
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_seeds.pcd", {}));

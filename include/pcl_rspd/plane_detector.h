@@ -94,6 +94,14 @@ struct DetectorParameters
     * door 2 cm proud of it keeps the door's samples otherwise. false = members are never revoked
     * (the paper). */
   bool release_far_members = true;
+  /** \brief Departure (edge sides, see settleEdgeSides): after the last assignment, a sample that
+    * borders another plane leaves its plane when its projection onto it lies beyond the line where
+    * the two planes meet, for the other plane if that one would own it by the same rule and holds it
+    * within its noise band, else for none. Within a noise band of an edge, growth and the
+    * distance-only passes take whichever plane reached a sample first: a step's riser keeps samples
+    * of the tread's noise above the nose, which puts it in voxels the riser never enters.
+    * false = the paper (and the passes before this one). */
+  bool edge_sides = true;
   /** \brief Departure (residual pattern, the paper's Sec. 5 suggestion): once grow-merge is stable,
     * a quadric w = f(u, v) is fitted to each plane's samples over its least-squares plane
     * (measureCurvature), and the plane is dropped as a facet of a curved surface (pipe, tank, pillar,
@@ -139,6 +147,8 @@ struct DetectorStatistics
   std::size_t released = 0;          ///< members released as far from their plane (release_far_members)
   std::size_t restored = 0;          ///< of those, given back to their plane
   std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
+  std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
+  std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check
   bool hit_iteration_cap = false;

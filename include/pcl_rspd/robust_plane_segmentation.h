@@ -90,6 +90,10 @@ struct RobustPlane
   *    object do not chain into one plane;
   *  - far members (setFarMemberRelease(false) for the paper): members farther from their plane's
   *    final estimate than its noise band are offered to the neighbouring planes;
+  *  - edge sides (setEdgeSides(false) for the paper): after the last assignment, a sample next to
+  *    another plane leaves its plane when its projection onto it lies beyond the line where the two
+  *    planes meet (the side the plane's members hold), for the other plane if that one would own it
+  *    by the same rule and holds it within its noise band, else for none;
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals), and samples
   *    inside one plane join it if their normal passes its MND and they lie within 3 robust standard
@@ -283,6 +287,16 @@ public:
   /** \brief Whether far members are released. */
   bool
   getFarMemberRelease () const { return params_.release_far_members; }
+
+  /** \brief Edge sides (default true; false = the paper): where two planes meet, a sample of one
+    * whose projection onto it lies beyond the line where they meet leaves it, for the other plane
+    * (within its noise band, projection on its own side) or for none. See pcl::rspd::settleEdgeSides
+    * and pcl::rspd::DetectorParameters::edge_sides. */
+  void
+  setEdgeSides (bool enable);
+  /** \brief Whether samples beyond the line where their plane meets another leave it. */
+  bool
+  getEdgeSides () const { return params_.edge_sides; }
 
   /** \brief M4, coplanar groups (default true; false = the paper's transitive M1-M3): a group joins
     * another only if most of its samples lie in the distance band of the plane the merged group

@@ -1,0 +1,53 @@
+/*
+ * pcl_rspd: edge sides — a departure that settles which plane owns the samples where two planes meet.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief What settleEdgeSides did. */
+struct EdgeSideCounts
+{
+  std::size_t moved = 0;    ///< samples given to the other plane
+  std::size_t released = 0; ///< samples that left their plane for none
+};
+
+/** \brief Edge sides (departure, DetectorParameters::edge_sides): a sample next to another plane
+  * leaves its plane when its projection onto that plane lies beyond the line where the two meet.
+  *
+  * Where planes a and b meet along a line, a's samples lie on one side of it, and noise along a's
+  * normal does not move their projection onto a across it; growth and the distance-only passes,
+  * which compare a sample with each plane's band, cannot tell a's samples from b's within a noise
+  * band of the line. The side of b that a's members hold is voted by a's members that border b and
+  * lie beyond b's band (the others are within noise of b): one side needs at least three votes in
+  * four, else a straddles b (a wall through a shelf) and the pair is left alone; so are pairs whose
+  * normals are within either plane's MND. A sample of a that borders b and whose projection onto a
+  * lies on b's other side goes to the bordering plane that would own it by the same rule (within its
+  * band, projection on its own side of a unless it straddles a, and some of its members voted;
+  * nearest relative to the band, ties to the lower label), or to none. One pass over the samples that border another plane at its start: it reads the labels
+  * before it, so the result does not depend on the thread count, and repeating it would walk a strip
+  * along the line where b's plane cuts through a beyond b's extent.
+  * \param[in] points samples
+  * \param[in] graph k-NN graph
+  * \param[in] band per patch, the distance within which its own samples lie (the noise band)
+  * \param[in] num_threads OpenMP threads (0: default)
+  * \param[in,out] patches members updated (planes kept as they are)
+  * \param[in,out] labels per-sample patch label, updated
+  */
+EdgeSideCounts
+settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+
+} // namespace rspd
+} // namespace pcl

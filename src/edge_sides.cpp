@@ -1,0 +1,180 @@
+/*
+ * pcl_rspd: edge sides (departure), see edge_sides.h.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/edge_sides.h>
+#include <pcl_rspd/normal_estimation.h> // resolveThreads
+#include <pcl_rspd/patch_growth.h>      // kNoPatch
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace pcl
+{
+namespace rspd
+{
+namespace
+{
+/** Side values besides +1 and -1: a's members lie on both sides of b; no member of a voted. */
+constexpr int kStraddles = 0;
+constexpr int kUnjudged = 2;
+
+std::uint64_t
+pairKey (std::uint32_t a, std::uint32_t b)
+{
+  return (static_cast<std::uint64_t> (a) << 32) | b;
+}
+
+/** Signed distance to plane b of p's projection onto plane a: p's coordinate in a across the line
+  * where a meets b (times the sine of their angle). Noise along a's normal leaves it unchanged. */
+double
+across (const Eigen::Vector3d& p, const PlanarPatch& a, const PlanarPatch& b)
+{
+  const Eigen::Vector3d q = p - (p - a.center).dot (a.normal) * a.normal;
+  return (q - b.center).dot (b.normal);
+}
+
+/** Normals farther apart than either plane's MND: the pair meets along a line worth judging. */
+bool
+distinct (const PlanarPatch& a, const PlanarPatch& b)
+{
+  return std::abs (a.normal.dot (b.normal)) < std::min (a.cos_mnd, b.cos_mnd);
+}
+} // namespace
+
+EdgeSideCounts
+settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+{
+  EdgeSideCounts counts;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (labels.size ());
+  const int threads = resolveThreads (num_threads);
+
+  // Samples that border a distinct plane, and the votes of those beyond its band. Per-thread lists,
+  // sorted after: the order of the threads does not matter.
+  std::vector<std::vector<std::uint32_t>> border_of (threads);
+  std::vector<std::vector<std::pair<std::uint64_t, int>>> votes_of (threads);
+#pragma omp parallel num_threads(threads)
+  {
+#ifdef _OPENMP
+    const int t = omp_get_thread_num ();
+#else
+    const int t = 0;
+#endif
+#pragma omp for schedule(dynamic, 1024)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii)
+    {
+      const std::uint32_t i = static_cast<std::uint32_t> (ii);
+      const std::uint32_t a = labels[i];
+      if (a == kNoPatch)
+        continue;
+      const Eigen::Vector3d p = points.points[i].cast<double> ();
+      std::uint32_t last = kNoPatch;
+      bool border = false;
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        const std::uint32_t b = labels[j];
+        if (b == kNoPatch || b == a || b == last || !distinct (patches[a], patches[b]))
+          return;
+        last = b; // consecutive repeats only; a repeated vote per (sample, plane) is harmless
+        border = true;
+        const double s = across (p, patches[a], patches[b]);
+        if (std::abs (s) > band[b])
+          votes_of[t].emplace_back (pairKey (a, b), s > 0.0 ? 1 : -1);
+      });
+      if (border)
+        border_of[t].push_back (i);
+    }
+  }
+  std::vector<std::uint32_t> border;
+  std::vector<std::pair<std::uint64_t, int>> votes;
+  for (int t = 0; t < threads; ++t)
+  {
+    border.insert (border.end (), border_of[t].begin (), border_of[t].end ());
+    votes.insert (votes.end (), votes_of[t].begin (), votes_of[t].end ());
+  }
+  std::sort (border.begin (), border.end ());
+  std::sort (votes.begin (), votes.end ());
+
+  std::vector<std::pair<std::uint64_t, int>> side; // (pair, +1, -1 or kStraddles), sorted by pair
+  for (std::size_t v = 0; v < votes.size ();)
+  {
+    std::size_t w = v, pos = 0, neg = 0;
+    for (; w < votes.size () && votes[w].first == votes[v].first; ++w)
+      (votes[w].second > 0 ? pos : neg) += 1;
+    if (pos >= 3 * neg)
+      side.emplace_back (votes[v].first, 1);
+    else if (neg >= 3 * pos)
+      side.emplace_back (votes[v].first, -1);
+    else
+      side.emplace_back (votes[v].first, kStraddles);
+    v = w;
+  }
+  const auto sideOf = [&side] (std::uint32_t a, std::uint32_t b) {
+    const auto it = std::lower_bound (side.begin (), side.end (), std::make_pair (pairKey (a, b), -2));
+    return it != side.end () && it->first == pairKey (a, b) ? it->second : kUnjudged;
+  };
+
+  std::vector<std::uint32_t> next (border.size ());
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
+  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (border.size ()); ++k)
+  {
+    const std::uint32_t i = border[k];
+    const std::uint32_t a = labels[i];
+    next[k] = a;
+    const Eigen::Vector3d p = points.points[i].cast<double> ();
+    bool beyond = false;
+    std::uint32_t best = kNoPatch;
+    double best_r = HUGE_VAL;
+    graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+      const std::uint32_t b = labels[j];
+      if (b == kNoPatch || b == a)
+        return;
+      const int sa = sideOf (a, b);
+      if (sa == kStraddles || sa == kUnjudged || sa * across (p, patches[a], patches[b]) >= 0.0)
+        return;
+      beyond = true;
+      const int sb = sideOf (b, a);
+      const double r = std::abs ((p - patches[b].center).dot (patches[b].normal)) / band[b];
+      // b straddling a has no side of a to keep to; b with no vote is not trusted with the sample.
+      if (sb != kUnjudged && (sb == kStraddles || sb * across (p, patches[b], patches[a]) >= 0.0) && r <= 1.0 &&
+          (r < best_r || (r == best_r && b < best)))
+      {
+        best_r = r;
+        best = b;
+      }
+    });
+    if (beyond)
+      next[k] = best;
+  }
+
+  bool changed = false;
+  for (std::size_t k = 0; k < border.size (); ++k)
+  {
+    const std::uint32_t i = border[k];
+    if (next[k] == labels[i])
+      continue;
+    changed = true;
+    (next[k] == kNoPatch ? counts.released : counts.moved) += 1;
+    labels[i] = next[k];
+  }
+  if (changed)
+  {
+    for (auto& patch : patches)
+      patch.members.clear ();
+    for (std::uint32_t i = 0; i < labels.size (); ++i)
+      if (labels[i] != kNoPatch)
+        patches[labels[i]].members.push_back (i);
+    for (auto& patch : patches)
+      if (!patch.members.empty ())
+        patch.first_index = patch.members.front (); // ascending: the lowest member (tie-break)
+  }
+  return counts;
+}
+
+} // namespace rspd
+} // namespace pcl
