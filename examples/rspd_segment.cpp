@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off] [--edge-sides on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off] [--edge-sides on|off] [--connected-parts on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -59,6 +59,9 @@ const char* const kHelp =
     "  --edge-sides on|off  where two planes meet, a point whose projection onto its plane lies\n"
     "                   beyond the line where they meet leaves it for the other plane or none\n"
     "                   (default on; off = the paper)\n"
+    "  --connected-parts on|off  a plane whose points that pass its inlier test form separate\n"
+    "                   parts (no neighbour link between them) is split into them (default on;\n"
+    "                   off = the paper)\n"
     "  --normal-fit pca|trimmed   estimated normals by PCA over the k-neighbourhood (default, the\n"
     "                             paper) or from its reweighted least-trimmed-squares plane (more\n"
     "                             accurate at edges, ~20x the normal stage's time)\n"
@@ -94,6 +97,7 @@ struct Options
   bool rim_retest = true;
   bool release = true;
   bool edge_sides = true;
+  bool connected_parts = true;
   bool curved_check = false;
   bool drop_outlier_seeds = true;
   bool dominant_frame = true;
@@ -183,6 +187,8 @@ parseArguments (int argc, char** argv)
       o.release = option.choice ("on", "off");
     else if (arg == "--edge-sides")
       o.edge_sides = option.choice ("on", "off");
+    else if (arg == "--connected-parts")
+      o.connected_parts = option.choice ("on", "off");
     else if (arg == "--normal-fit")
       o.trimmed_normals = !option.choice ("pca", "trimmed");
     else if (arg == "--frame")
@@ -331,6 +337,7 @@ run (const Options& o)
   seg.setRimCellRetest (o.rim_retest);
   seg.setFarMemberRelease (o.release);
   seg.setEdgeSides (o.edge_sides);
+  seg.setConnectedParts (o.connected_parts);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);
@@ -355,10 +362,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
        "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
-       "%zu far members released and %zu of them given back, %zu edge samples moved and %zu released%s)",
+       "%zu far members released and %zu of them given back, %zu planes split off, %zu edge samples moved and %zu released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
        stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
-       stats.restored, stats.edge_moved, stats.edge_released, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.restored, stats.split_planes, stats.edge_moved, stats.edge_released, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

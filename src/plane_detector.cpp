@@ -2,6 +2,7 @@
  * pcl_rspd: the pipeline of Sec. 3 — split, then grow and merge until every patch is stable.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <pcl_rspd/connected_parts.h>
 #include <pcl_rspd/edge_sides.h>
 #include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/octree_split.h>
@@ -498,6 +499,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       labels = labelSamples (points.size (), patches);
       st.restored = offerReleasedSamples (points, graph, params, released, patches, labels);
     }
+  }
+
+  if (params.connected_parts && !patches.empty ())
+  {
+    // Connected parts (departure, see DetectorParameters::connected_parts).
+    labels = labelSamples (points.size (), patches);
+    st.split_planes = splitDisconnectedPlanes (points, graph, params, patches, labels);
   }
 
   if (params.curved_plane_check)

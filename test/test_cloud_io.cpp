@@ -1012,7 +1012,7 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
       {"a.pcd", "b.pcd"}, {"--demo", "a.pcd"}, {"--png-size", "12"}, {"--demo=1"}, {"-o"},
       {"--coplanar-merge", "yes"}, {"--coplanar-merge"}, {"--outlier-seeds=on"}, {"--frame", "x"}, {"--frame"}, {"--normal-fit", "mcd"}, {"--normal-fit"}, {"--curved-check", "1"},
       {"--assign", "some"}, {"--assign"}, {"--assign", "tail"}, {"--rim-retest", "yes"}, {"--rim-retest"},
-      {"--release", "1"}, {"--release"}, {"--edge-sides", "yes"}, {"--edge-sides"},
+      {"--release", "1"}, {"--release"}, {"--edge-sides", "yes"}, {"--edge-sides"}, {"--connected-parts", "1"}, {"--connected-parts"},
   };
   for (const auto& args : cases)
   {

@@ -348,10 +348,15 @@ TEST (SharedData, SynPebPc01)
   // 16 with the small-plane pass; coplanar-group merging keeps facets of the faceted objects apart.
   // Its planes follow no dominant frame, and the score depends on where the octree's cells fall:
   // in the file's own axes 0.825 (40 found), 0.733-0.770 for three random rotations (README); in the
-  // dominant-plane frame 0.723 (37) whatever the rotation.
+  // dominant-plane frame 0.723 (37) whatever the rotation. Its two largest planes are coplanar,
+  // 13 cm apart; samples of the facets crossing the gap join both and carry M1 across, and only the
+  // connected-parts split keeps them two planes (0.730 -> 0.828, 37 -> 38 found, measured).
   const Detection r = detect (cloud, truth);
-  EXPECT_GE (r.score.found, 36);
-  EXPECT_GE (r.score.f1, 0.70);
+  EXPECT_GE (r.score.found, 38);
+  EXPECT_GE (r.score.f1, 0.80);
+  const auto whole = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setConnectedParts (false); };
+  const Detection merged = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, whole);
+  EXPECT_LT (merged.score.f1, 0.76);
 }
 
 TEST (SharedData, CgalBuildingPseudoTruth)

@@ -102,6 +102,12 @@ struct DetectorParameters
     * of the tread's noise above the nose, which puts it in voxels the riser never enters.
     * false = the paper (and the passes before this one). */
   bool edge_sides = true;
+  /** \brief Departure (connected parts, see splitDisconnectedPlanes): after the far-member release,
+    * a plane whose members that pass its inlier test (Sec. 3.3) at its last estimate form two or more
+    * parts of at least ε samples that no graph edge joins is split into them. M1 keeps a plane of the
+    * paper in one piece, but samples of a surface crossing the gap between two pieces of one geometric
+    * plane can join both and carry M1 across. false = the paper (and the planes as merged). */
+  bool connected_parts = true;
   /** \brief Departure (residual pattern, the paper's Sec. 5 suggestion): once grow-merge is stable,
     * a quadric w = f(u, v) is fitted to each plane's samples over its least-squares plane
     * (measureCurvature), and the plane is dropped as a facet of a curved surface (pipe, tank, pillar,
@@ -147,6 +153,7 @@ struct DetectorStatistics
   std::size_t released = 0;          ///< members released as far from their plane (release_far_members)
   std::size_t restored = 0;          ///< of those, given back to their plane
   std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
+  std::size_t split_planes = 0;      ///< planes added by splitting planes into connected parts (connected_parts)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane

@@ -90,6 +90,9 @@ struct RobustPlane
   *    object do not chain into one plane;
   *  - far members (setFarMemberRelease(false) for the paper): members farther from their plane's
   *    final estimate than its noise band are offered to the neighbouring planes;
+  *  - connected parts (setConnectedParts(false) for the paper): after the far-member release, a plane
+  *    whose members that pass its inlier test at its last estimate form separate parts of at least ε
+  *    samples each (no graph edge between them) is split into them;
   *  - edge sides (setEdgeSides(false) for the paper): after the last assignment, a sample next to
   *    another plane leaves its plane when its projection onto it lies beyond the line where the two
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
@@ -287,6 +290,16 @@ public:
   /** \brief Whether far members are released. */
   bool
   getFarMemberRelease () const { return params_.release_far_members; }
+
+  /** \brief Connected parts (default true; false = the paper): a plane whose members that pass its
+    * inlier test at its last estimate form two or more parts of at least ε samples with no graph edge
+    * between them is split into them. See pcl::rspd::splitDisconnectedPlanes and
+    * pcl::rspd::DetectorParameters::connected_parts. */
+  void
+  setConnectedParts (bool enable);
+  /** \brief Whether planes made of separate parts are split. */
+  bool
+  getConnectedParts () const { return params_.connected_parts; }
 
   /** \brief Edge sides (default true; false = the paper): where two planes meet, a sample of one
     * whose projection onto it lies beyond the line where they meet leaves it, for the other plane

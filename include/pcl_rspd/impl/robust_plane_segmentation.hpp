@@ -306,6 +306,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setFarMemberRelease (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setConnectedParts (bool enable)
+{
+  params_.connected_parts = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setEdgeSides (bool enable)
 {
   params_.edge_sides = enable;

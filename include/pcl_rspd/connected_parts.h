@@ -1,0 +1,46 @@
+/*
+ * pcl_rspd: connected parts — a departure that splits a plane whose members form separate surfaces.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief Connected parts (departure, DetectorParameters::connected_parts): split every plane whose
+  * members that pass its own inlier test fall into two or more parts of at least \a min_part_size
+  * samples that no graph edge joins.
+  *
+  * M1 joins patches only through a graph edge, so a plane of the paper is one connected piece of
+  * surface. A plane can still hold two pieces of one geometric plane that do not touch: growth
+  * tests a sample against the estimate of the moment, so samples of a surface that crosses the plane
+  * in the gap between the pieces join both and carry M1 across (synpeb_pc01's two largest planes,
+  * 13 cm apart). Those samples fail the plane's inlier test (Sec. 3.3: distance within MDP, normal
+  * within MND) at its final estimate; the samples that pass it are joined by the graph's edges (either
+  * direction) into parts. With two or more parts of at least \a min_part_size samples, each such part
+  * becomes a plane (largest first keeps the plane's place; ties to the lower sample index) and is
+  * estimated again; every other member joins the part of a graph neighbour in its plane (in rounds
+  * reading the round before, the lowest part first), or the largest part where none is reached.
+  * \param[in] points samples
+  * \param[in] graph k-NN graph
+  * \param[in] params constants (min_patch_size is the smallest part that becomes a plane)
+  * \param[in,out] patches planes; new parts are appended
+  * \param[in,out] labels per-sample patch label, rewritten when a plane is split
+  * \return planes added
+  */
+std::size_t
+splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                         std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,125 @@
+/*
+ * Tests of the connected-parts split (departure, splitDisconnectedPlanes).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/connected_parts.h>
+#include <pcl_rspd/patch_growth.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace pcl::rspd;
+
+namespace
+{
+/** Two 0.5 m squares of one plane z = 0, 0.2 m apart along x, and a strip of samples of a surface
+  * crossing the gap (normals 45° off the plane), all held by one plane. */
+struct Bridged
+{
+  PointSet set;
+  std::vector<std::uint32_t> left, right, bridge;
+};
+
+Bridged
+makeBridged (int bridge_samples)
+{
+  Bridged b;
+  b.left = rspd_test::addRectangle (b.set, {0, 0, 0}, {0.5f, 0, 0}, {0, 0.5f, 0}, 25, 25);
+  b.right = rspd_test::addRectangle (b.set, {0.7f, 0, 0}, {0.5f, 0, 0}, {0, 0.5f, 0}, 25, 25);
+  for (int t = 0; t < bridge_samples; ++t)
+  {
+    b.bridge.push_back (static_cast<std::uint32_t> (b.set.size ()));
+    b.set.points.emplace_back (0.5f + 0.2f * (t + 0.5f) / bridge_samples, 0.25f, 0.0f);
+    b.set.normals.push_back (Eigen::Vector3f (1, 0, 1).normalized ());
+    b.set.input_indices.push_back (static_cast<pcl::index_t> (b.set.input_indices.size ()));
+  }
+  return b;
+}
+
+std::vector<PlanarPatch>
+onePlane (std::size_t n)
+{
+  std::vector<std::uint32_t> all (n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    all[i] = i;
+  return {rspd_test::makePatch (all, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+}
+
+DetectorParameters
+parameters (int threads)
+{
+  DetectorParameters p;
+  p.min_patch_size = 50;
+  p.num_threads = threads;
+  return p;
+}
+} // namespace
+
+TEST (ConnectedParts, PlaneBridgedByAnotherSurfaceIsSplitIntoItsParts)
+{
+  const Bridged b = makeBridged (20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
+  std::vector<PlanarPatch> patches = onePlane (b.set.size ());
+  std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, parameters (1), patches, labels), 1u);
+  ASSERT_EQ (patches.size (), 2u);
+  // Equal parts: the one holding the lower sample keeps the plane's place.
+  for (const auto i : b.left)
+    EXPECT_EQ (labels[i], 0u) << i;
+  for (const auto i : b.right)
+    EXPECT_EQ (labels[i], 1u) << i;
+  // The bridge follows the part it neighbours: its left end the left square, its right end the right.
+  EXPECT_EQ (labels[b.bridge.front ()], 0u);
+  EXPECT_EQ (labels[b.bridge.back ()], 1u);
+  EXPECT_EQ (patches[0].members.size () + patches[1].members.size (), b.set.size ());
+  for (std::uint32_t l = 0; l < 2; ++l)
+  {
+    EXPECT_TRUE (std::is_sorted (patches[l].members.begin (), patches[l].members.end ()));
+    EXPECT_EQ (patches[l].first_index, patches[l].members.front ());
+    EXPECT_NEAR (std::abs (patches[l].normal.z ()), 1.0, 1e-6); // each part estimated again
+  }
+}
+
+TEST (ConnectedParts, BridgeOfInliersKeepsThePlaneWhole)
+{
+  // The same strip with the plane's own normal: inliers join the squares into one part.
+  Bridged b = makeBridged (20);
+  for (const auto i : b.bridge)
+    b.set.normals[i] = Eigen::Vector3f::UnitZ ();
+  const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
+  std::vector<PlanarPatch> patches = onePlane (b.set.size ());
+  std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
+  const std::vector<std::uint32_t> before = labels;
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, parameters (1), patches, labels), 0u);
+  EXPECT_EQ (patches.size (), 1u);
+  EXPECT_EQ (labels, before);
+}
+
+TEST (ConnectedParts, PartsSmallerThanEpsilonStayWithThePlane)
+{
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {0.5f, 0, 0}, {0, 0.5f, 0}, 25, 25);
+  rspd_test::addRectangle (s, {0.7f, 0, 0}, {0.1f, 0, 0}, {0, 0.1f, 0}, 5, 5); // 25 < ε = 50
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<PlanarPatch> patches = onePlane (s.size ());
+  std::vector<std::uint32_t> labels = labelSamples (s.size (), patches);
+  EXPECT_EQ (splitDisconnectedPlanes (s, g, parameters (1), patches, labels), 0u);
+  EXPECT_EQ (patches[0].members.size (), s.size ());
+}
+
+TEST (ConnectedParts, ResultDoesNotDependOnTheThreadCount)
+{
+  const Bridged b = makeBridged (20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
+  std::vector<PlanarPatch> p1 = onePlane (b.set.size ()), p2 = p1;
+  std::vector<std::uint32_t> l1 = labelSamples (b.set.size (), p1), l2 = l1;
+  splitDisconnectedPlanes (b.set, g, parameters (1), p1, l1);
+  splitDisconnectedPlanes (b.set, g, parameters (2), p2, l2);
+  EXPECT_EQ (l1, l2);
+  ASSERT_EQ (p1.size (), p2.size ());
+  for (std::size_t l = 0; l < p1.size (); ++l)
+    EXPECT_EQ (p1[l].members, p2[l].members);
+}
