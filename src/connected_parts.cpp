@@ -83,6 +83,7 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
 #pragma omp parallel for schedule(static, 4096) num_threads(resolveThreads (params.num_threads))
   for (std::ptrdiff_t i = 0; i < count; ++i)
     root[i] = findRoot (parent, static_cast<std::uint32_t> (i));
+  std::vector<std::atomic<std::uint32_t>> ().swap (parent); // memory: 4 bytes a sample at 10M samples
   std::vector<std::uint32_t> part_size (n, 0);
   for (std::uint32_t i = 0; i < n; ++i)
     if (core[i])
@@ -90,7 +91,9 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
 
   std::size_t added = 0;
   const std::size_t planes = patches.size ();
-  std::vector<std::uint32_t> part (n, kNoPatch); // part of a member within its plane, while splitting it
+  // While a plane is split, root[m] of its members is read once and then holds m's part (the roots
+  // of other planes' samples are untouched).
+  std::vector<std::uint32_t>& part = root;
   for (std::size_t l = 0; l < planes; ++l)
   {
     // The plane's parts of at least min_patch_size core samples: (size, root), largest first.
@@ -106,14 +109,12 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     std::vector<std::uint32_t> open;
     for (const auto m : patches[l].members)
     {
-      part[m] = kNoPatch;
-      if (core[m])
-      {
-        for (std::uint32_t b = 0; b < big.size (); ++b)
-          if (big[b].second == root[m])
-            part[m] = b;
-      }
-      if (part[m] == kNoPatch)
+      std::uint32_t p = kNoPatch;
+      for (std::uint32_t b = 0; core[m] && b < big.size (); ++b)
+        if (big[b].second == root[m])
+          p = b;
+      part[m] = p;
+      if (p == kNoPatch)
         open.push_back (m);
     }
     std::vector<std::uint32_t> choice (open.size ());
