@@ -71,6 +71,7 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
   }
   return updated;
 }
+
 /** One round of a pass that offers unlabelled samples to planes: sample open[j] joins plane
   * choice[j] (kNoPatch: stays open); the samples left open and their choices are compacted to the
   * front. \return samples that joined a plane */
@@ -181,7 +182,6 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
       return assigned;
   }
 }
-
 
 } // namespace
 

@@ -45,20 +45,36 @@ patchesOf (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatch> pl
     planes[labels[i]].members.push_back (i);
   return planes;
 }
+
+/** A step's nose: tread z = 0 over x in [0, 0.5], riser x = 0 over z in [-0.5, 0], 1 cm apart, noise
+  * 4 mm along each normal; the tread is plane 0, the riser plane 1. */
+struct Nose
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+};
+
+Nose
+makeNose (std::uint32_t seed)
+{
+  Nose n;
+  const auto tread = rspd_test::addRectangle (n.set, {0, 0, 0}, {0.5f, 0, 0}, {0, 0.2f, 0}, 50, 20, 0.004f, seed);
+  const auto riser = rspd_test::addRectangle (n.set, {0, 0, -0.5f}, {0, 0, 0.5f}, {0, 0.2f, 0}, 50, 20, 0.004f, seed + 1);
+  n.planes = {rspd_test::makePatch ({tread[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1),
+              rspd_test::makePatch ({riser[0]}, {0, 0, 0}, {1, 0, 0}, 0.01, 0.1)};
+  return n;
+}
 } // namespace
 
 TEST (EdgeSides, SamplesBeyondTheLineGoToThePlaneWhoseSideTheyAreOn)
 {
-  // A step's nose: tread z = 0 over x in [0, 0.5], riser x = 0 over z in [-0.5, 0], 1 cm apart,
-  // noise 4 mm along each normal. A riser sample pushed outwards (x < 0) within noise of the tread
-  // is nearer the tread, yet no tread sample has x < 0: it is the riser's; likewise z > 0 is the
-  // tread's. Inside the step (x > 0, z < 0) both planes may own a sample; it is left alone.
-  PointSet s;
-  const auto tread = rspd_test::addRectangle (s, {0, 0, 0}, {0.5f, 0, 0}, {0, 0.2f, 0}, 50, 20, 0.004f, 1);
-  const auto riser = rspd_test::addRectangle (s, {0, 0, -0.5f}, {0, 0, 0.5f}, {0, 0.2f, 0}, 50, 20, 0.004f, 2);
+  // A riser sample pushed outwards (x < 0) within noise of the tread is nearer the tread, yet no
+  // tread sample has x < 0: it is the riser's; likewise z > 0 is the tread's. Inside the step
+  // (x > 0, z < 0) both planes may own a sample; it is left alone.
+  const Nose nose = makeNose (1);
+  const PointSet& s = nose.set;
+  const std::vector<PlanarPatch>& planes = nose.planes;
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
-  const std::vector<PlanarPatch> planes{rspd_test::makePatch ({tread[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1),
-                                        rspd_test::makePatch ({riser[0]}, {0, 0, 0}, {1, 0, 0}, 0.01, 0.1)};
   std::vector<std::uint32_t> labels = nearestLabels (s, planes);
   std::vector<PlanarPatch> patches = patchesOf (labels, planes);
   const std::vector<std::uint32_t> before = labels;
@@ -139,12 +155,10 @@ TEST (EdgeSides, PlanesWithinTheirNormalDeviationAreLeftAlone)
 
 TEST (EdgeSides, ResultDoesNotDependOnTheThreadCount)
 {
-  PointSet s;
-  const auto tread = rspd_test::addRectangle (s, {0, 0, 0}, {0.5f, 0, 0}, {0, 0.2f, 0}, 50, 20, 0.004f, 7);
-  const auto riser = rspd_test::addRectangle (s, {0, 0, -0.5f}, {0, 0, 0.5f}, {0, 0.2f, 0}, 50, 20, 0.004f, 8);
+  const Nose nose = makeNose (7);
+  const PointSet& s = nose.set;
+  const std::vector<PlanarPatch>& planes = nose.planes;
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
-  const std::vector<PlanarPatch> planes{rspd_test::makePatch ({tread[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1),
-                                        rspd_test::makePatch ({riser[0]}, {0, 0, 0}, {1, 0, 0}, 0.01, 0.1)};
   std::vector<std::uint32_t> one = nearestLabels (s, planes), two = one;
   std::vector<PlanarPatch> p1 = patchesOf (one, planes), p2 = p1;
   settleEdgeSides (s, g, {0.012, 0.012}, 1, p1, one);
