@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off] [--edge-sides on|off] [--connected-parts on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off] [--edge-sides on|off] [--connected-parts on|off] [--bent-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -61,6 +61,9 @@ const char* const kHelp =
     "                   (default on; off = the paper)\n"
     "  --connected-parts on|off  a plane whose points that pass its inlier test form separate\n"
     "                   parts (no neighbour link between them) is split into them (default on;\n"
+    "                   off = the paper)\n"
+    "  --bent-split on|off  a plane whose points lie on two planes meeting at an edge (more than\n"
+    "                   15 degrees apart, well beyond its noise) is split there (default on;\n"
     "                   off = the paper)\n"
     "  --normal-fit pca|trimmed   estimated normals by PCA over the k-neighbourhood (default, the\n"
     "                             paper) or from its reweighted least-trimmed-squares plane (more\n"
@@ -98,6 +101,7 @@ struct Options
   bool release = true;
   bool edge_sides = true;
   bool connected_parts = true;
+  bool bent_split = true;
   bool curved_check = false;
   bool drop_outlier_seeds = true;
   bool dominant_frame = true;
@@ -189,6 +193,8 @@ parseArguments (int argc, char** argv)
       o.edge_sides = option.choice ("on", "off");
     else if (arg == "--connected-parts")
       o.connected_parts = option.choice ("on", "off");
+    else if (arg == "--bent-split")
+      o.bent_split = option.choice ("on", "off");
     else if (arg == "--normal-fit")
       o.trimmed_normals = !option.choice ("pca", "trimmed");
     else if (arg == "--frame")
@@ -338,6 +344,7 @@ run (const Options& o)
   seg.setFarMemberRelease (o.release);
   seg.setEdgeSides (o.edge_sides);
   seg.setConnectedParts (o.connected_parts);
+  seg.setBentPlaneSplit (o.bent_split);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);
@@ -362,10 +369,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
        "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
-       "%zu far members released and %zu of them given back, %zu planes split off, %zu edge samples moved and %zu released%s)",
+       "%zu far members released and %zu of them given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
        stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
-       stats.restored, stats.split_planes, stats.edge_moved, stats.edge_released, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

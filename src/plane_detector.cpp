@@ -2,6 +2,7 @@
  * pcl_rspd: the pipeline of Sec. 3 — split, then grow and merge until every patch is stable.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <pcl_rspd/bent_planes.h>
 #include <pcl_rspd/connected_parts.h>
 #include <pcl_rspd/edge_sides.h>
 #include <pcl_rspd/normal_estimation.h>
@@ -510,6 +511,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
 
   if (params.curved_plane_check)
     st.curved_planes = dropCurvedPlanes (points, params, patches);
+
+  if (params.bent_plane_split && !patches.empty ())
+  {
+    // Bent planes (departure, see DetectorParameters::bent_plane_split); after the curved check,
+    // which judges whole facets of a curved surface, not the parts a split would leave.
+    st.bent_planes = splitBentPlanes (points, params, patches);
+  }
 
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {

@@ -12,9 +12,11 @@
 
 #include <gtest/gtest.h>
 
-#include <functional>
+#include <Eigen/Geometry>
 
 #include <fstream>
+#include <functional>
+#include <random>
 #include <sys/stat.h>
 
 namespace
@@ -338,6 +340,85 @@ TEST (SharedData, SynPebTest100)
   EXPECT_GE (r.score.f1, 0.95);
 }
 
+namespace
+{
+/** Folded plates: \a rows x \a cols sheets, each of two or three 0.3-0.6 m faces (0.4-0.7 m long)
+  * that fold by 20-40 degrees, turned about z at random; uniform samples, Gaussian noise \a sigma
+  * along each face's normal, truth 1..K per face, no other surface. Dense enough (about 30,000
+  * samples per square metre) that k = 50 neighbourhoods are about as wide as 2 cm of noise. */
+void
+foldedPlates (int rows, int cols, std::size_t samples, float sigma, std::uint32_t seed,
+              pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<std::uint32_t>& truth)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  struct Face
+  {
+    Eigen::Vector3d o, a, b;
+  };
+  std::vector<Face> faces;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+    {
+      const Eigen::Matrix3d turn = Eigen::AngleAxisd (M_PI * u (rng), Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
+      const Eigen::Vector3d origin (1.6 * c, 1.8 * r, 0.3);
+      const double length = 0.4 + 0.3 * u (rng);
+      double tilt = 20.0 * u (rng);
+      Eigen::Vector3d p = Eigen::Vector3d::Zero ();
+      const int count = u (rng) < 0.5 ? 2 : 3;
+      for (int f = 0; f < count; ++f)
+      {
+        const double t = tilt * M_PI / 180.0, w = 0.3 + 0.3 * u (rng);
+        const Eigen::Vector3d a (w * std::cos (t), 0.0, w * std::sin (t));
+        faces.push_back ({origin + turn * p, turn * a, turn * Eigen::Vector3d (0.0, length, 0.0)});
+        p += a;
+        tilt += (u (rng) < 0.5 ? -1.0 : 1.0) * (20.0 + 20.0 * u (rng));
+      }
+    }
+  double total = 0.0;
+  for (const auto& f : faces)
+    total += f.a.cross (f.b).norm ();
+  std::normal_distribution<double> g (0.0, sigma);
+  for (std::size_t k = 0; k < faces.size (); ++k)
+  {
+    const Face& f = faces[k];
+    const Eigen::Vector3d n = f.a.cross (f.b).normalized ();
+    const auto m = static_cast<std::size_t> (static_cast<double> (samples) * f.a.cross (f.b).norm () / total);
+    for (std::size_t i = 0; i < m; ++i)
+    {
+      const Eigen::Vector3d q = f.o + u (rng) * f.a + u (rng) * f.b + g (rng) * n;
+      cloud.push_back (pcl::PointXYZ (static_cast<float> (q.x ()), static_cast<float> (q.y ()), static_cast<float> (q.z ())));
+      truth.push_back (static_cast<std::uint32_t> (k + 1));
+    }
+  }
+}
+} // namespace
+
+TEST (Scenario, FoldedPlatesNeedTheBentPlaneSplit)
+{
+  // With 2.5 cm of noise a k-neighbourhood's PCA normal is mostly noise, MND is wide, and growth
+  // carries a plane over a fold of 20-40 degrees onto the next face (as on synpeb_pc01's boxes).
+  // Measured over seeds 1-4 at 1.5, 2 and 2.5 cm: the split never loses, and gains most here
+  // (seed 1: 20 -> 27 of 31 faces found, F1 0.608 -> 0.790).
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  std::vector<std::uint32_t> truth;
+  foldedPlates (3, 4, 250000, 0.025f, 1, cloud, truth);
+  const Detection bent = detect (cloud, truth);
+  const auto unbent = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setBentPlaneSplit (false); };
+  const Detection whole = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, unbent);
+  EXPECT_GE (bent.score.found, whole.score.found + 5);
+  EXPECT_GE (bent.score.f1, whole.score.f1 + 0.12);
+  EXPECT_LE (bent.score.false_planes, whole.score.false_planes);
+  // At 5 mm of noise normals resolve the folds, and the split changes nothing.
+  cloud.clear ();
+  truth.clear ();
+  foldedPlates (3, 4, 250000, 0.005f, 1, cloud, truth);
+  const Detection clean = detect (cloud, truth);
+  const Detection clean_whole = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, unbent);
+  EXPECT_EQ (clean.labels, clean_whole.labels);
+  EXPECT_GE (clean.score.f1, 0.95);
+}
+
 TEST (SharedData, SynPebPc01)
 {
   pcl::PointCloud<pcl::PointXYZ> cloud;
@@ -350,11 +431,21 @@ TEST (SharedData, SynPebPc01)
   // in the file's own axes 0.825 (40 found), 0.733-0.770 for three random rotations (README); in the
   // dominant-plane frame 0.723 (37) whatever the rotation. Its two largest planes are coplanar,
   // 13 cm apart; samples of the facets crossing the gap join both and carry M1 across, and only the
-  // connected-parts split keeps them two planes (0.730 -> 0.828, 37 -> 38 found, measured).
+  // connected-parts split keeps them two planes (0.730 -> 0.828, 37 -> 38 found, measured). Its
+  // boxes' faces (1-2 cm noise on 0.3-0.7 m faces) give PCA normals so noisy that MND reaches 30-70
+  // degrees: growth carries a plane over edges of 19-42 degrees onto the next face, and only the
+  // bent-plane split separates them (0.828 -> 0.909, 38 -> 51 found, measured).
   const Detection r = detect (cloud, truth);
-  EXPECT_GE (r.score.found, 38);
-  EXPECT_GE (r.score.f1, 0.80);
-  const auto whole = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setConnectedParts (false); };
+  EXPECT_GE (r.score.found, 49);
+  EXPECT_GE (r.score.f1, 0.89);
+  const auto unbent = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setBentPlaneSplit (false); };
+  const Detection bent = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, unbent);
+  EXPECT_LT (bent.score.f1, 0.85);
+  EXPECT_LE (bent.score.found, 40);
+  const auto whole = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    s.setBentPlaneSplit (false);
+    s.setConnectedParts (false);
+  };
   const Detection merged = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, whole);
   EXPECT_LT (merged.score.f1, 0.76);
 }

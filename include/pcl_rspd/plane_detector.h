@@ -108,6 +108,15 @@ struct DetectorParameters
     * paper in one piece, but samples of a surface crossing the gap between two pieces of one geometric
     * plane can join both and carry M1 across. false = the paper (and the planes as merged). */
   bool connected_parts = true;
+  /** \brief Departure (bent planes, see splitBentPlanes): after the connected parts and the curved check, a plane whose
+    * members two planes meeting at an edge explain (fitHinge: the robust σ falls to at most
+    * bent_sigma_ratio, they meet at more than 90° minus T1's angle, each side has ε samples and passes
+    * T1-T3) is split at the edge, and each part again (three levels). With noisy normals MND is wide,
+    * and growth and re-estimation carry a plane over an edge onto the next face. false = the paper. */
+  bool bent_plane_split = true;
+  /** \brief Bent planes: the largest ratio of the two planes' robust σ to the one plane's that counts as
+    * a bend (0.8; fitHinge's search on flat noisy planes stays above 0.85). */
+  double bent_sigma_ratio = 0.8;
   /** \brief Departure (residual pattern, the paper's Sec. 5 suggestion): once grow-merge is stable,
     * a quadric w = f(u, v) is fitted to each plane's samples over its least-squares plane
     * (measureCurvature), and the plane is dropped as a facet of a curved surface (pipe, tank, pillar,
@@ -154,6 +163,7 @@ struct DetectorStatistics
   std::size_t restored = 0;          ///< of those, given back to their plane
   std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
   std::size_t split_planes = 0;      ///< planes added by splitting planes into connected parts (connected_parts)
+  std::size_t bent_planes = 0;       ///< planes added by splitting bent planes at their edge (bent_plane_split)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane

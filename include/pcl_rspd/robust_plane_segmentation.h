@@ -93,6 +93,10 @@ struct RobustPlane
   *  - connected parts (setConnectedParts(false) for the paper): after the far-member release, a plane
   *    whose members that pass its inlier test at its last estimate form separate parts of at least ε
   *    samples each (no graph edge between them) is split into them;
+  *  - bent planes (setBentPlaneSplit(false) for the paper): then a plane whose samples lie on two
+  *    planes meeting at an edge (more than 90° minus T1's angle apart, the robust spread down to 0.8
+  *    of one plane's or less, each side passing T1-T3) is split there, and each part again; noisy
+  *    normals give a wide MND, and growth carries a plane over an edge onto the next face;
   *  - edge sides (setEdgeSides(false) for the paper): after the last assignment, a sample next to
   *    another plane leaves its plane when its projection onto it lies beyond the line where the two
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
@@ -300,6 +304,16 @@ public:
   /** \brief Whether planes made of separate parts are split. */
   bool
   getConnectedParts () const { return params_.connected_parts; }
+
+  /** \brief Bent planes (default true; false = the paper): a plane whose samples lie on two planes
+    * meeting at an edge (more than 90° minus T1's angle apart, lowering the robust spread to at most
+    * 0.8 of one plane's, each side a plane by T1-T3) is split there, and each part again. See
+    * pcl::rspd::splitBentPlanes and pcl::rspd::DetectorParameters::bent_plane_split. */
+  void
+  setBentPlaneSplit (bool enable);
+  /** \brief Whether planes bent at an edge are split. */
+  bool
+  getBentPlaneSplit () const { return params_.bent_plane_split; }
 
   /** \brief Edge sides (default true; false = the paper): where two planes meet, a sample of one
     * whose projection onto it lies beyond the line where they meet leaves it, for the other plane

@@ -313,6 +313,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setConnectedParts (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setBentPlaneSplit (bool enable)
+{
+  params_.bent_plane_split = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setEdgeSides (bool enable)
 {
   params_.edge_sides = enable;

@@ -1,0 +1,69 @@
+/*
+ * pcl_rspd: bent planes — a departure that splits a plane whose members lie on two planes meeting at an edge.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief Two planes fitted to one set of samples, one on each side of a straight cut (fitHinge). */
+struct HingeFit
+{
+  std::vector<std::uint32_t> parts[2]; ///< the samples on each side of the cut
+  double single_sigma = 0.0;           ///< robust σ (1.4826 median |d|) about the set's least-squares plane
+  double split_sigma = 0.0;            ///< robust σ about each side's own least-squares plane
+  double angle = 0.0;                  ///< angle between the two sides' planes (radians, in [0, π/2])
+};
+
+/** \brief The straight cut across a set of samples whose two sides are best explained by two planes.
+  *
+  * Cuts run perpendicular to 16 in-plane directions of the set's least-squares plane (every 11.25
+  * degrees), at each of 127 evenly spaced positions along the direction; the cut whose two sides'
+  * least-squares planes leave the smallest sum of squared distances wins. Per-bin sums make a cut
+  * O(1), so the search is O(16 n); sets of more than 16,384 samples are searched on an evenly spaced
+  * subset of that size (the cut is a coarse feature), and the result is measured on all of them.
+  * \param[in] points samples
+  * \param[in] samples the set (internal indices)
+  * \param[out] fit both sides, their robust spreads and angle
+  * \return false if no cut leaves two sides that each determine a plane
+  */
+bool
+fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, HingeFit& fit);
+
+/** \brief Bent planes (departure, DetectorParameters::bent_plane_split): split every plane whose
+  * members lie on two planes meeting at an edge, and each part again (at most three levels).
+  *
+  * Where PCA normals are noisy (a k-neighbourhood barely wider than the noise), MND is wide: growth
+  * crosses an edge to a face bent by less than MND, each re-estimate (Sec. 3.5) tilts the plane
+  * towards that face and widens MDP, and the plane ends up holding both faces (synpeb_pc01's boxes:
+  * faces 19-42 degrees apart, MND 30-70 degrees). Positions still tell the faces apart. A plane is
+  * split at fitHinge's cut when
+  *  - the two sides' planes lower the robust σ of the distances to at most
+  *    DetectorParameters::bent_sigma_ratio (0.8) of the one plane's: a bend, not noise (on flat
+  *    noisy planes of 100 to 30,000 samples the search never got below 0.85);
+  *  - they meet at more than 90° minus T1's angle (15° by default): T1 accepts a cell whose samples
+  *    spread over that slope as one plane, so a gentler bend is what the paper calls a plane (a
+  *    scanned wall that bows, or steps by its noise);
+  *  - each side has at least ε samples and passes the robust planarity test (Sec. 3.2, T1-T3).
+  * The result does not depend on the thread count (planes are independent).
+  * \param[in] points samples
+  * \param[in] params constants (ε, T1-T3, bent_sigma_ratio, threads)
+  * \param[in,out] patches planes; a split plane keeps its place for its largest part, the others are
+  * appended, and every part is estimated again (Eqs. 3-9)
+  * \return planes added
+  */
+std::size_t
+splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches);
+
+} // namespace rspd
+} // namespace pcl

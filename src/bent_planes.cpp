@@ -1,0 +1,290 @@
+/*
+ * pcl_rspd: bent planes (departure), see bent_planes.h.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/bent_planes.h>
+#include <pcl_rspd/normal_estimation.h>  // resolveThreads
+#include <pcl_rspd/robust_statistics.h> // medianInPlace, kMadScale
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace pcl
+{
+namespace rspd
+{
+namespace
+{
+/** Sums for the least-squares plane of a set of samples, offsets taken from a fixed origin (one of
+  * them) so that precision does not depend on where the cloud lies. */
+struct PlaneSums
+{
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero ();
+  double n = 0.0;
+
+  void
+  add (const Eigen::Vector3d& d)
+  {
+    sum += d;
+    outer += d * d.transpose ();
+    n += 1.0;
+  }
+
+  void
+  add (const PlaneSums& o)
+  {
+    sum += o.sum;
+    outer += o.outer;
+    n += o.n;
+  }
+
+  void
+  remove (const PlaneSums& o)
+  {
+    sum -= o.sum;
+    outer -= o.outer;
+    n -= o.n;
+  }
+
+  Eigen::Matrix3d
+  covariance () const
+  {
+    const Eigen::Vector3d mean = sum / n;
+    return outer / n - mean * mean.transpose ();
+  }
+
+  /** Sum of squared distances to the least-squares plane (n λ0); +inf below three samples. */
+  double
+  residual () const
+  {
+    if (n < 3.0)
+      return std::numeric_limits<double>::infinity ();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig (covariance (), Eigen::EigenvaluesOnly);
+    return n * std::max (0.0, eig.eigenvalues () (0));
+  }
+
+  /** Centroid (as an offset) and normal; false if the samples are collinear or coincide. */
+  bool
+  plane (Eigen::Vector3d& center, Eigen::Vector3d& normal, Eigen::Matrix3d* axes = nullptr) const
+  {
+    if (n < 3.0)
+      return false;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig (covariance ());
+    if (eig.info () != Eigen::Success || !(eig.eigenvalues () (1) > 0.0))
+      return false;
+    center = sum / n;
+    normal = eig.eigenvectors ().col (0);
+    if (axes)
+      *axes = eig.eigenvectors ();
+    return normal.allFinite ();
+  }
+};
+
+/** Robust σ of the distances of \a samples to the least-squares plane of those same samples, appended
+  * to \a d; its normal in \a normal. False if they determine no plane. */
+bool
+appendDistances (const PointSet& points, const std::vector<std::uint32_t>& samples, const Eigen::Vector3d& origin,
+                 std::vector<float>& d, Eigen::Vector3d& normal)
+{
+  PlaneSums s;
+  for (const auto i : samples)
+    s.add (points.points[i].cast<double> () - origin);
+  Eigen::Vector3d center;
+  if (!s.plane (center, normal))
+    return false;
+  for (const auto i : samples)
+    d.push_back (static_cast<float> (std::abs ((points.points[i].cast<double> () - origin - center).dot (normal))));
+  return true;
+}
+
+constexpr int kDirections = 16;
+constexpr int kBins = 128;
+constexpr std::size_t kSearchSamples = 16384;
+constexpr int kMaxLevels = 3;
+} // namespace
+
+bool
+fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, HingeFit& fit)
+{
+  const std::size_t n = samples.size ();
+  fit = HingeFit ();
+  if (n < 6)
+    return false;
+  const Eigen::Vector3d origin = points.points[samples.front ()].cast<double> ();
+  // A large set is searched on every m-th member: a uniform subset, and the cut is a coarse feature.
+  const std::size_t stride = (n + kSearchSamples - 1) / kSearchSamples;
+  std::vector<Eigen::Vector3d> q;
+  q.reserve (n / stride + 1);
+  PlaneSums all;
+  for (std::size_t t = 0; t < n; t += stride)
+  {
+    q.push_back (points.points[samples[t]].cast<double> () - origin);
+    all.add (q.back ());
+  }
+  Eigen::Vector3d center, normal;
+  Eigen::Matrix3d axes;
+  if (!all.plane (center, normal, &axes))
+    return false;
+
+  std::vector<PlaneSums> bins (kBins);
+  std::vector<double> along (q.size ());
+  double best = std::numeric_limits<double>::infinity ();
+  Eigen::Vector3d best_dir = Eigen::Vector3d::Zero ();
+  double best_cut = 0.0;
+  for (int k = 0; k < kDirections; ++k)
+  {
+    const double a = k * (M_PI / kDirections);
+    const Eigen::Vector3d dir = std::cos (a) * axes.col (2) + std::sin (a) * axes.col (1);
+    double lo = std::numeric_limits<double>::infinity (), hi = -lo;
+    for (std::size_t t = 0; t < q.size (); ++t)
+    {
+      along[t] = q[t].dot (dir);
+      lo = std::min (lo, along[t]);
+      hi = std::max (hi, along[t]);
+    }
+    if (!(hi > lo))
+      continue;
+    std::fill (bins.begin (), bins.end (), PlaneSums ());
+    const double scale = kBins / (hi - lo);
+    for (std::size_t t = 0; t < q.size (); ++t)
+      bins[std::min (kBins - 1, static_cast<int> ((along[t] - lo) * scale))].add (q[t]);
+    PlaneSums below, above = all;
+    for (int b = 0; b + 1 < kBins; ++b)
+    {
+      if (bins[b].n == 0.0)
+        continue; // the same cut as the previous bin's
+      below.add (bins[b]);
+      above.remove (bins[b]);
+      const double r = below.residual () + above.residual ();
+      if (r < best)
+      {
+        best = r;
+        best_dir = dir;
+        best_cut = lo + (b + 1) / scale;
+      }
+    }
+  }
+  if (!std::isfinite (best))
+    return false;
+
+  // Sides and spreads on every sample.
+  for (const auto i : samples)
+    fit.parts[(points.points[i].cast<double> () - origin).dot (best_dir) >= best_cut ? 1 : 0].push_back (i);
+  std::vector<float> d;
+  d.reserve (n);
+  Eigen::Vector3d side_normal[2];
+  for (int s = 0; s < 2; ++s)
+    if (!appendDistances (points, fit.parts[s], origin, d, side_normal[s]))
+      return false;
+  fit.split_sigma = kMadScale * medianInPlace (d);
+  d.clear ();
+  Eigen::Vector3d whole_normal;
+  appendDistances (points, samples, origin, d, whole_normal);
+  fit.single_sigma = kMadScale * medianInPlace (d);
+  fit.angle = std::acos (std::min (1.0, std::abs (side_normal[0].dot (side_normal[1]))));
+  return true;
+}
+
+namespace
+{
+/** The leaves of \a members split at edges (see splitBentPlanes), appended to \a leaves; false, and
+  * nothing appended, where \a members is no bent plane or cannot be split into planes. */
+bool
+splitAtEdges (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>& members,
+              int level, std::vector<std::vector<std::uint32_t>>& leaves)
+{
+  HingeFit fit;
+  if (level >= kMaxLevels || members.size () < 2 * params.min_patch_size || !fitHinge (points, members, fit) ||
+      !(fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma) ||
+      !(fit.angle > 0.5 * M_PI - params.min_distance_angle) || fit.parts[0].size () < params.min_patch_size ||
+      fit.parts[1].size () < params.min_patch_size)
+    return false;
+  std::vector<std::vector<std::uint32_t>> found;
+  for (auto& side : fit.parts)
+  {
+    // A side that is a plane by T1-T3 is a leaf unless it is bent itself; one that is not must
+    // split into planes (one cut through the middle face of three leaves 1.5 faces a side).
+    if (splitAtEdges (points, params, side, level + 1, found))
+      continue;
+    if (robustPlanarityTest (points, side, params).verdict != PlanarityVerdict::Planar)
+      return false;
+    found.push_back (std::move (side));
+  }
+  for (auto& f : found)
+    leaves.push_back (std::move (f));
+  return true;
+}
+
+/** Joins leaves whose union is no bent plane (a face the cuts divided) until none is left. */
+void
+joinUnbentLeaves (const PointSet& points, const DetectorParameters& params, std::vector<std::vector<std::uint32_t>>& leaves)
+{
+  for (bool joined = true; joined && leaves.size () > 1;)
+  {
+    joined = false;
+    for (std::size_t a = 0; a < leaves.size () && !joined; ++a)
+      for (std::size_t b = a + 1; b < leaves.size () && !joined; ++b)
+      {
+        std::vector<std::uint32_t> both (leaves[a]);
+        both.insert (both.end (), leaves[b].begin (), leaves[b].end ());
+        HingeFit fit;
+        if (fitHinge (points, both, fit) && fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma)
+          continue; // two planes explain the pair: an edge or a step between them
+        leaves[a].swap (both);
+        leaves.erase (leaves.begin () + static_cast<std::ptrdiff_t> (b));
+        joined = true;
+      }
+  }
+}
+} // namespace
+
+std::size_t
+splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+{
+  const std::size_t count = patches.size ();
+  // Per plane, the member lists it ends as (none: unchanged).
+  std::vector<std::vector<std::vector<std::uint32_t>>> pieces (count);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
+  for (std::ptrdiff_t p = 0; p < static_cast<std::ptrdiff_t> (count); ++p)
+    if (splitAtEdges (points, params, patches[p].members, 0, pieces[p]))
+      joinUnbentLeaves (points, params, pieces[p]);
+
+  std::size_t added = 0;
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    auto& parts = pieces[p];
+    if (parts.size () < 2)
+      continue;
+    for (auto& part : parts)
+      std::sort (part.begin (), part.end ());
+    // The largest part keeps the plane's place; ties to the lower first sample.
+    std::sort (parts.begin (), parts.end (), [] (const auto& a, const auto& b) {
+      return a.size () != b.size () ? a.size () > b.size () : a.front () < b.front ();
+    });
+    for (std::size_t s = 0; s < parts.size (); ++s)
+    {
+      PlanarPatch part;
+      part.first_index = parts[s].front ();
+      part.members = std::move (parts[s]);
+      PlaneEstimate estimate;
+      estimatePlane (points, part.members, params, estimate); // each part passed T1-T3: it succeeds
+      part.setEstimate (estimate);
+      if (s == 0)
+        patches[p] = std::move (part);
+      else
+      {
+        patches.push_back (std::move (part));
+        ++added;
+      }
+    }
+  }
+  return added;
+}
+
+} // namespace rspd
+} // namespace pcl

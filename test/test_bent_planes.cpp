@@ -1,0 +1,224 @@
+/*
+ * Tests of the bent-plane split (departure, fitHinge and splitBentPlanes).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/bent_planes.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+using namespace pcl::rspd;
+
+namespace
+{
+constexpr float kDegree = static_cast<float> (M_PI / 180.0);
+
+/** A roof: two 0.4 x 0.6 m faces meeting along the y axis, each tilted by half of \a dihedral from
+  * z = 0, Gaussian noise \a noise along each face's normal; faces[0] at x < 0, faces[1] at x > 0. */
+struct Roof
+{
+  PointSet set;
+  std::vector<std::uint32_t> faces[2];
+};
+
+Roof
+makeRoof (float dihedral, float noise, int nu = 40, int nv = 60, std::uint32_t seed = 1)
+{
+  Roof r;
+  const float h = 0.5f * dihedral;
+  const Eigen::Vector3f right (0.4f * std::cos (h), 0.0f, -0.4f * std::sin (h));
+  const Eigen::Vector3f left (-0.4f * std::cos (h), 0.0f, -0.4f * std::sin (h));
+  const Eigen::Vector3f along (0.0f, 0.6f, 0.0f);
+  r.faces[0] = rspd_test::addRectangle (r.set, {0, 0, 0}, along, left, nv, nu, noise, seed);
+  r.faces[1] = rspd_test::addRectangle (r.set, {0, 0, 0}, right, along, nu, nv, noise, seed + 1);
+  return r;
+}
+
+std::vector<PlanarPatch>
+onePlane (std::size_t n)
+{
+  std::vector<std::uint32_t> all (n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    all[i] = i;
+  return {rspd_test::makePatch (all, {0, 0, 0}, {0, 0, 1}, 0.05, 0.5)};
+}
+
+DetectorParameters
+parameters (int threads = 1)
+{
+  DetectorParameters p;
+  p.min_patch_size = 50;
+  p.num_threads = threads;
+  return p;
+}
+
+/** Samples of \a face that ended in a patch other than the one holding most of them, all of them and
+  * those farther than \a band from the plane x = 0 (the roofs' edge). */
+std::pair<std::size_t, std::size_t>
+strays (const PointSet& set, const std::vector<PlanarPatch>& patches, const std::vector<std::uint32_t>& face,
+        float band = 0.05f)
+{
+  const std::set<std::uint32_t> f (face.begin (), face.end ());
+  std::size_t best = 0;
+  for (std::size_t l = 1; l < patches.size (); ++l)
+  {
+    std::size_t a = 0, b = 0;
+    for (const auto i : patches[l].members)
+      a += f.count (i);
+    for (const auto i : patches[best].members)
+      b += f.count (i);
+    if (a > b)
+      best = l;
+  }
+  std::pair<std::size_t, std::size_t> n (0, 0);
+  const std::set<std::uint32_t> home (patches[best].members.begin (), patches[best].members.end ());
+  for (const auto i : face)
+    if (!home.count (i))
+    {
+      ++n.first;
+      n.second += std::abs (set.points[i].x ()) > band ? 1 : 0;
+    }
+  return n;
+}
+} // namespace
+
+TEST (BentPlanes, HingeFindsTheEdgeOfARoof)
+{
+  const Roof r = makeRoof (30.0f * kDegree, 0.005f);
+  std::vector<std::uint32_t> all (r.set.size ());
+  for (std::uint32_t i = 0; i < all.size (); ++i)
+    all[i] = i;
+  HingeFit fit;
+  ASSERT_TRUE (fitHinge (r.set, all, fit));
+  EXPECT_NEAR (fit.angle, 30.0 * kDegree, 1.0 * kDegree);
+  EXPECT_NEAR (fit.split_sigma, 0.005, 0.001);  // each side: its own noise
+  EXPECT_GT (fit.single_sigma, 4.0 * fit.split_sigma); // one plane: the bend
+  // The cut runs along the edge: each side holds one face, but for samples within noise of both
+  // planes (less than 3 σ / sin 30° = 3 cm from the edge).
+  for (int s = 0; s < 2; ++s)
+  {
+    std::size_t off = 0, far = 0, positive = 0;
+    for (const auto i : fit.parts[s])
+      positive += r.set.points[i].x () > 0 ? 1 : 0;
+    const float sign = 2 * positive > fit.parts[s].size () ? 1.0f : -1.0f;
+    for (const auto i : fit.parts[s])
+      if (sign * r.set.points[i].x () < 0)
+      {
+        ++off;
+        far += std::abs (r.set.points[i].x ()) > 0.03f ? 1 : 0;
+      }
+    EXPECT_EQ (far, 0u);
+    EXPECT_LE (off, fit.parts[s].size () / 20);
+  }
+}
+
+TEST (BentPlanes, RoofHeldByOnePlaneIsSplitIntoItsFaces)
+{
+  const Roof r = makeRoof (30.0f * kDegree, 0.01f);
+  std::vector<PlanarPatch> patches = onePlane (r.set.size ());
+  EXPECT_EQ (splitBentPlanes (r.set, parameters (), patches), 1u);
+  ASSERT_EQ (patches.size (), 2u);
+  // Samples change face only within noise of both planes (3 σ / sin 30° = 6 cm of the edge).
+  for (const auto& face : r.faces)
+  {
+    const auto n = strays (r.set, patches, face, 0.06f);
+    EXPECT_EQ (n.second, 0u);
+    EXPECT_LE (n.first, face.size () / 20);
+  }
+  for (const auto& p : patches)
+  {
+    EXPECT_TRUE (std::is_sorted (p.members.begin (), p.members.end ()));
+    EXPECT_EQ (p.first_index, p.members.front ());
+    EXPECT_NEAR (std::abs (p.normal.z ()), std::cos (15.0 * kDegree), 0.02); // estimated again
+  }
+  EXPECT_EQ (patches[0].members.size () + patches[1].members.size (), r.set.size ());
+}
+
+TEST (BentPlanes, FlatNoisyPlanesAreKeptWhole)
+{
+  // Flat squares of several sizes and noise levels: two planes only fit noise.
+  for (const int n : {12, 30, 100})
+    for (const float noise : {0.002f, 0.02f, 0.05f})
+    {
+      PointSet s;
+      rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, n, n, noise, 7);
+      std::vector<PlanarPatch> patches = onePlane (s.size ());
+      EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 0u) << n << " " << noise;
+      EXPECT_EQ (patches.size (), 1u);
+    }
+}
+
+TEST (BentPlanes, BendWithinT1sSlopeIsKeptWhole)
+{
+  // 10 degrees: two planes explain the samples far better than one, but T1 would accept the bend
+  // within one planar cell (90 - 75 = 15 degrees).
+  const Roof r = makeRoof (10.0f * kDegree, 0.002f);
+  std::vector<PlanarPatch> patches = onePlane (r.set.size ());
+  EXPECT_EQ (splitBentPlanes (r.set, parameters (), patches), 0u);
+  // 20 degrees is an edge.
+  const Roof r20 = makeRoof (20.0f * kDegree, 0.002f);
+  patches = onePlane (r20.set.size ());
+  EXPECT_EQ (splitBentPlanes (r20.set, parameters (), patches), 1u);
+}
+
+TEST (BentPlanes, FaceSmallerThanEpsilonStaysWithThePlane)
+{
+  // 8 x 6 = 48 samples on the second face, ε = 50.
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {0, 0.6f, 0}, {-0.4f, 0, 0}, 60, 40, 0.002f, 1);
+  const float a = 40.0f * kDegree;
+  rspd_test::addRectangle (s, {0, 0, 0}, {0.08f * std::cos (a), 0, 0.08f * std::sin (a)}, {0, 0.6f, 0}, 8, 6, 0.002f, 2);
+  std::vector<PlanarPatch> patches = onePlane (s.size ());
+  EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 0u);
+  EXPECT_EQ (patches[0].members.size (), s.size ());
+}
+
+TEST (BentPlanes, ThreeFacesAreSplitIntoThree)
+{
+  // A folded strip: faces at 0, 30 and 60 degrees about parallel edges. The best single cut runs
+  // through the middle face, and its sides, 1.5 faces each, fail T3: each is split again and the
+  // middle face's halves are joined.
+  PointSet s;
+  std::vector<std::uint32_t> faces[3];
+  Eigen::Vector3f o (0, 0, 0);
+  for (int f = 0; f < 3; ++f)
+  {
+    const float a = 30.0f * f * kDegree;
+    const Eigen::Vector3f step (0.4f * std::cos (a), 0.0f, 0.4f * std::sin (a));
+    faces[f] = rspd_test::addRectangle (s, o, step, {0, 0.6f, 0}, 40, 60, 0.004f, 3 + f);
+    o += step;
+  }
+  std::vector<PlanarPatch> patches = onePlane (s.size ());
+  EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 2u);
+  ASSERT_EQ (patches.size (), 3u);
+  for (const auto& face : faces)
+    EXPECT_LE (strays (s, patches, face).first, face.size () / 20);
+}
+
+TEST (BentPlanes, ResultDoesNotDependOnTheThreadCount)
+{
+  const Roof a = makeRoof (25.0f * kDegree, 0.01f), b = makeRoof (35.0f * kDegree, 0.01f, 30, 50, 5);
+  PointSet s = a.set;
+  std::vector<PlanarPatch> p1 = onePlane (a.set.size ());
+  // A second roof, far away, held by a second plane.
+  std::vector<std::uint32_t> second;
+  for (std::size_t i = 0; i < b.set.size (); ++i)
+  {
+    second.push_back (static_cast<std::uint32_t> (s.size ()));
+    s.points.push_back (b.set.points[i] + Eigen::Vector3f (5, 0, 0));
+    s.normals.push_back (b.set.normals[i]);
+    s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+  }
+  p1.push_back (rspd_test::makePatch (second, {5, 0, 0}, {0, 0, 1}, 0.05, 0.5));
+  std::vector<PlanarPatch> p2 = p1;
+  EXPECT_EQ (splitBentPlanes (s, parameters (1), p1), 2u);
+  EXPECT_EQ (splitBentPlanes (s, parameters (2), p2), 2u);
+  ASSERT_EQ (p1.size (), p2.size ());
+  for (std::size_t l = 0; l < p1.size (); ++l)
+    EXPECT_EQ (p1[l].members, p2[l].members);
+}
