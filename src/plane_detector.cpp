@@ -339,6 +339,65 @@ releaseFarMembers (const PointSet& points, const DetectorParameters& params, std
   return released;
 }
 
+/** Departure (released planes), see DetectorParameters::seed_released_planes: the released samples
+  * that no plane took, joined by graph edges (either direction) into groups; a group of at least ε
+  * samples that passes T1-T3 (or, failing only T3, whose inliers do, as the rim-cell retest) becomes a
+  * plane. Groups in order of their lowest sample. \return planes added */
+std::size_t
+seedReleasedPlanes (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& released,
+                    std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+{
+  std::vector<std::uint32_t> open;
+  for (const auto& r : released)
+    if (labels[r.first] == kNoPatch)
+      open.push_back (r.first);
+  std::sort (open.begin (), open.end ());
+  // Union-find over the open samples (positions in open), roots the lowest position.
+  std::vector<std::uint32_t> parent (open.size ());
+  for (std::uint32_t t = 0; t < parent.size (); ++t)
+    parent[t] = t;
+  const auto find = [&] (std::uint32_t x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (std::uint32_t t = 0; t < open.size (); ++t)
+    graph.forEachNeighbor (open[t], [&] (std::uint32_t j) {
+      const auto it = std::lower_bound (open.begin (), open.end (), j);
+      if (it == open.end () || *it != j)
+        return;
+      std::uint32_t a = find (t), b = find (static_cast<std::uint32_t> (it - open.begin ()));
+      if (a > b)
+        std::swap (a, b);
+      parent[b] = a;
+    });
+  std::vector<std::vector<std::uint32_t>> groups (open.size ());
+  for (std::uint32_t t = 0; t < open.size (); ++t)
+    groups[find (t)].push_back (open[t]);
+  std::size_t added = 0;
+  for (auto& group : groups)
+  {
+    if (group.size () < params.min_patch_size)
+      continue;
+    PlanarityResult test = robustPlanarityTest (points, group, params);
+    if (test.verdict == PlanarityVerdict::TooManyOutliers)
+      test = robustPlanarityTest (points, intervalInliers (points, group, test.estimate), params);
+    if (test.verdict != PlanarityVerdict::Planar)
+      continue;
+    PlanarPatch plane;
+    plane.members = std::move (test.inliers);
+    std::sort (plane.members.begin (), plane.members.end ());
+    plane.first_index = plane.members.front ();
+    plane.setEstimate (test.estimate);
+    for (const auto i : plane.members)
+      labels[i] = static_cast<std::uint32_t> (patches.size ());
+    patches.push_back (std::move (plane));
+    ++added;
+  }
+  return added;
+}
+
 /** The rest of the far-member departure: growth restricted to the \a released samples (in rounds
   * that read the round before, each joins the neighbouring plane whose inlier test of Sec. 3.3 it
   * passes, nearest relative to MDP), then a released sample that no plane took and no other plane
@@ -346,7 +405,7 @@ releaseFarMembers (const PointSet& points, const DetectorParameters& params, std
 std::size_t
 offerReleasedSamples (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
                       const std::vector<std::pair<std::uint32_t, std::uint32_t>>& released,
-                      std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+                      std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, std::size_t& seeded)
 {
   std::vector<std::uint32_t> open;
   for (const auto& r : released)
@@ -376,6 +435,7 @@ offerReleasedSamples (const PointSet& points, const NeighborGraph& graph, const 
     if (applyChoices (open, choice, patches, labels) == 0)
       break;
   }
+  seeded = params.seed_released_planes ? seedReleasedPlanes (points, graph, params, released, patches, labels) : 0;
   std::size_t restored = 0;
   for (const auto& [sample, anchor] : released)
   {
@@ -498,7 +558,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     if (!released.empty ())
     {
       labels = labelSamples (points.size (), patches);
-      st.restored = offerReleasedSamples (points, graph, params, released, patches, labels);
+      st.restored = offerReleasedSamples (points, graph, params, released, patches, labels, st.released_planes);
     }
   }
 

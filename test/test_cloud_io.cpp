@@ -1013,7 +1013,7 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
       {"--coplanar-merge", "yes"}, {"--coplanar-merge"}, {"--outlier-seeds=on"}, {"--frame", "x"}, {"--frame"}, {"--normal-fit", "mcd"}, {"--normal-fit"}, {"--curved-check", "1"},
       {"--assign", "some"}, {"--assign"}, {"--assign", "tail"}, {"--rim-retest", "yes"}, {"--rim-retest"},
       {"--release", "1"}, {"--release"}, {"--edge-sides", "yes"}, {"--edge-sides"}, {"--connected-parts", "1"}, {"--connected-parts"},
-      {"--bent-split", "yes"}, {"--bent-split"},
+      {"--bent-split", "yes"}, {"--bent-split"}, {"--released-planes", "no"}, {"--released-planes"},
   };
   for (const auto& args : cases)
   {

@@ -206,6 +206,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_FALSE (room == labels ("r.pcd", "room_sides_off.pcd", {"--edge-sides=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));
   const std::string industrial = labels ("i.pcd", "ind.pcd", {"--outlier-seeds", "keep"});
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_curved.pcd", {"--outlier-seeds", "keep", "--curved-check", "on"}));
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_seeds.pcd", {}));

@@ -94,6 +94,12 @@ struct DetectorParameters
     * door 2 cm proud of it keeps the door's samples otherwise. false = members are never revoked
     * (the paper). */
   bool release_far_members = true;
+  /** \brief Departure (released planes, part of the far-member release): before the released samples
+    * that no plane took go back, those joined by graph edges into a group of at least ε samples that
+    * passes T1-T3 (failing only T3: whose inliers pass, as the rim-cell retest) become a plane. A door
+    * 2 cm proud of its wall that no cell seeded is released whole by the wall and would otherwise go
+    * back to it. false = they all go back. */
+  bool seed_released_planes = true;
   /** \brief Departure (edge sides, see settleEdgeSides): after the last assignment, a sample that
     * borders another plane leaves its plane when its projection onto it lies beyond the line where
     * the two planes meet, for the other plane if that one would own it by the same rule and holds it
@@ -161,6 +167,7 @@ struct DetectorStatistics
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept
   std::size_t released = 0;          ///< members released as far from their plane (release_far_members)
   std::size_t restored = 0;          ///< of those, given back to their plane
+  std::size_t released_planes = 0;   ///< planes seeded by released samples (seed_released_planes)
   std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
   std::size_t split_planes = 0;      ///< planes added by splitting planes into connected parts (connected_parts)
   std::size_t bent_planes = 0;       ///< planes added by splitting bent planes at their edge (bent_plane_split)

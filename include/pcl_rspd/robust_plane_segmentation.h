@@ -89,7 +89,8 @@ struct RobustPlane
   *    of the least-squares plane of the larger group's samples), so facets of a faceted or curved
   *    object do not chain into one plane;
   *  - far members (setFarMemberRelease(false) for the paper): members farther from their plane's
-  *    final estimate than its noise band are offered to the neighbouring planes;
+  *    final estimate than its noise band are offered to the neighbouring planes, and a group of them
+  *    that is a plane by T1-T3 becomes one (setReleasedPlaneSeeding(false): they go back);
   *  - connected parts (setConnectedParts(false) for the paper): after the far-member release, a plane
   *    whose members that pass its inlier test at its last estimate form separate parts of at least ε
   *    samples each (no graph edge between them) is split into them;
@@ -294,6 +295,16 @@ public:
   /** \brief Whether far members are released. */
   bool
   getFarMemberRelease () const { return params_.release_far_members; }
+
+  /** \brief Released planes (default true; false = every released sample no plane took goes back):
+    * with the far-member release on, released samples that no plane took and that form a group of at
+    * least ε samples (graph edges) passing T1-T3 become a plane. See
+    * pcl::rspd::DetectorParameters::seed_released_planes. */
+  void
+  setReleasedPlaneSeeding (bool enable);
+  /** \brief Whether groups of released samples may seed planes. */
+  bool
+  getReleasedPlaneSeeding () const { return params_.seed_released_planes; }
 
   /** \brief Connected parts (default true; false = the paper): a plane whose members that pass its
     * inlier test at its last estimate form two or more parts of at least ε samples with no graph edge

@@ -306,6 +306,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setFarMemberRelease (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setReleasedPlaneSeeding (bool enable)
+{
+  params_.seed_released_planes = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setConnectedParts (bool enable)
 {
   params_.connected_parts = enable;
