@@ -85,8 +85,8 @@ struct PlaneSums
   }
 };
 
-/** Robust σ of the distances of \a samples to the least-squares plane of those same samples, appended
-  * to \a d; its normal in \a normal. False if they determine no plane. */
+/** Appends to \a d the distances of \a samples to their own least-squares plane, whose normal goes to
+  * \a normal. False (nothing appended) if they determine no plane. */
 bool
 appendDistances (const PointSet& points, const std::vector<std::uint32_t>& samples, const Eigen::Vector3d& origin,
                  std::vector<float>& d, Eigen::Vector3d& normal)
