@@ -353,28 +353,18 @@ seedReleasedPlanes (const PointSet& points, const NeighborGraph& graph, const De
     if (labels[r.first] == kNoPatch)
       open.push_back (r.first);
   std::sort (open.begin (), open.end ());
-  // Union-find over the open samples (positions in open), roots the lowest position.
-  std::vector<std::uint32_t> parent (open.size ());
-  for (std::uint32_t t = 0; t < parent.size (); ++t)
-    parent[t] = t;
-  const auto find = [&] (std::uint32_t x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  // Groups over positions in open; UnionFind's root is a group's lowest position, so groups come in
+  // order of their lowest sample.
+  UnionFind sets (open.size ());
   for (std::uint32_t t = 0; t < open.size (); ++t)
     graph.forEachNeighbor (open[t], [&] (std::uint32_t j) {
       const auto it = std::lower_bound (open.begin (), open.end (), j);
-      if (it == open.end () || *it != j)
-        return;
-      std::uint32_t a = find (t), b = find (static_cast<std::uint32_t> (it - open.begin ()));
-      if (a > b)
-        std::swap (a, b);
-      parent[b] = a;
+      if (it != open.end () && *it == j)
+        sets.unite (t, static_cast<std::uint32_t> (it - open.begin ()));
     });
   std::vector<std::vector<std::uint32_t>> groups (open.size ());
   for (std::uint32_t t = 0; t < open.size (); ++t)
-    groups[find (t)].push_back (open[t]);
+    groups[sets.find (t)].push_back (open[t]);
   std::size_t added = 0;
   for (auto& group : groups)
   {

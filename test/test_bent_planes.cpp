@@ -42,10 +42,7 @@ makeRoof (float dihedral, float noise, int nu = 40, int nv = 60, std::uint32_t s
 std::vector<PlanarPatch>
 onePlane (std::size_t n)
 {
-  std::vector<std::uint32_t> all (n);
-  for (std::uint32_t i = 0; i < n; ++i)
-    all[i] = i;
-  return {rspd_test::makePatch (all, {0, 0, 0}, {0, 0, 1}, 0.05, 0.5)};
+  return rspd_test::onePatchOfAll (n, 0.05, 0.5);
 }
 
 DetectorParameters
@@ -221,4 +218,39 @@ TEST (BentPlanes, ResultDoesNotDependOnTheThreadCount)
   ASSERT_EQ (p1.size (), p2.size ());
   for (std::size_t l = 0; l < p1.size (); ++l)
     EXPECT_EQ (p1[l].members, p2[l].members);
+}
+
+TEST (BentPlanes, SetsThatDetermineNoTwoPlanesAreRefused)
+{
+  // Fewer than six samples, samples on one line, and coincident samples: no hinge, and the split
+  // leaves such a plane (and an empty list) alone.
+  PointSet s;
+  for (int i = 0; i < 200; ++i)
+  {
+    s.points.emplace_back (0.01f * i, 0.0f, 0.0f); // a line
+    s.normals.push_back (Eigen::Vector3f::UnitZ ());
+    s.input_indices.push_back (i);
+  }
+  for (int i = 0; i < 100; ++i)
+  {
+    s.points.emplace_back (5.0f, 5.0f, 5.0f); // one point, repeated
+    s.normals.push_back (Eigen::Vector3f::UnitZ ());
+    s.input_indices.push_back (200 + i);
+  }
+  std::vector<std::uint32_t> line (200), same (100), few {0, 1, 2, 3, 4};
+  for (std::uint32_t i = 0; i < 200; ++i)
+    line[i] = i;
+  for (std::uint32_t i = 0; i < 100; ++i)
+    same[i] = 200 + i;
+  HingeFit fit;
+  EXPECT_FALSE (fitHinge (s, few, fit));
+  EXPECT_FALSE (fitHinge (s, line, fit));
+  EXPECT_FALSE (fitHinge (s, same, fit));
+  std::vector<PlanarPatch> patches {rspd_test::makePatch (line, {0, 0, 0}, {0, 0, 1}, 0.05, 0.5),
+                                    rspd_test::makePatch (same, {5, 5, 5}, {0, 0, 1}, 0.05, 0.5)};
+  EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 0u);
+  EXPECT_EQ (patches[0].members, line);
+  EXPECT_EQ (patches[1].members, same);
+  std::vector<PlanarPatch> none;
+  EXPECT_EQ (splitBentPlanes (s, parameters (), none), 0u);
 }

@@ -42,10 +42,7 @@ makeBridged (int bridge_samples)
 std::vector<PlanarPatch>
 onePlane (std::size_t n)
 {
-  std::vector<std::uint32_t> all (n);
-  for (std::uint32_t i = 0; i < n; ++i)
-    all[i] = i;
-  return {rspd_test::makePatch (all, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+  return rspd_test::onePatchOfAll (n, 0.01, 0.1);
 }
 
 DetectorParameters

@@ -73,4 +73,14 @@ makePatch (const std::vector<std::uint32_t>& members, const Eigen::Vector3d& c, 
   p.setEstimate (e);
   return p;
 }
+
+/** One patch holding samples 0..n-1: plane z = 0 through the origin, MDP \a mdp, MND \a mnd. */
+inline std::vector<pcl::rspd::PlanarPatch>
+onePatchOfAll (std::size_t n, double mdp, double mnd)
+{
+  std::vector<std::uint32_t> all (n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    all[i] = i;
+  return {makePatch (all, {0, 0, 0}, {0, 0, 1}, mdp, mnd)};
+}
 } // namespace rspd_test
