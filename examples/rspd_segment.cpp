@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--connected-parts on|off] [--bent-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -61,6 +61,9 @@ const char* const kHelp =
     "  --edge-sides on|off  where two planes meet, a point whose projection onto its plane lies\n"
     "                   beyond the line where they meet leaves it for the other plane or none\n"
     "                   (default on; off = the paper)\n"
+    "  --support on|off last, a point on or beyond its plane's rim, more than 6 times its\n"
+    "                   neighbours' spacing from the rest of the plane and in no other plane's\n"
+    "                   noise band, leaves it (default on; off = the paper)\n"
     "  --connected-parts on|off  a plane whose points that pass its inlier test form separate\n"
     "                   parts (no neighbour link between them) is split into them (default on;\n"
     "                   off = the paper)\n"
@@ -103,6 +106,7 @@ struct Options
   bool release = true;
   bool released_planes = true;
   bool edge_sides = true;
+  bool support = true;
   bool connected_parts = true;
   bool bent_split = true;
   bool curved_check = false;
@@ -196,6 +200,8 @@ parseArguments (int argc, char** argv)
       o.released_planes = option.choice ("on", "off");
     else if (arg == "--edge-sides")
       o.edge_sides = option.choice ("on", "off");
+    else if (arg == "--support")
+      o.support = option.choice ("on", "off");
     else if (arg == "--connected-parts")
       o.connected_parts = option.choice ("on", "off");
     else if (arg == "--bent-split")
@@ -349,6 +355,7 @@ run (const Options& o)
   seg.setFarMemberRelease (o.release);
   seg.setReleasedPlaneSeeding (o.released_planes);
   seg.setEdgeSides (o.edge_sides);
+  seg.setSupportCheck (o.support);
   seg.setConnectedParts (o.connected_parts);
   seg.setBentPlaneSplit (o.bent_split);
   seg.setCurvedPlaneCheck (o.curved_check);
@@ -375,10 +382,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
        "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
        stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

@@ -22,7 +22,7 @@
  *        or Automatic with b9 & 16); b9 & 32: setCoplanarMerge (false), setDropOutlierSeeds (false),
  *        setDetectionFrame (InputAxes), setNormalFit (Pca), setRimCellRetest (false) and
  *        setFarMemberRelease (false), setEdgeSides (false), setConnectedParts (false),
- *        setBentPlaneSplit (false), setReleasedPlaneSeeding (false);
+ *        setBentPlaneSplit (false), setReleasedPlaneSeeding (false), setSupportCheck (false);
  *        b9 & 64: setCurvedPlaneCheck (true) and setNormalFit (TrimmedPlane); b9 & 128: setFinalAssignment (All;
  *        None with b9 & 32, else Edges with b9 & 64; the default is Tails)
  *   10   slopes of the tilted plane
@@ -243,6 +243,7 @@ configure (Seg& seg, int k, std::uint8_t flags, std::uint8_t b8, std::uint8_t or
     seg.setConnectedParts (false);
     seg.setBentPlaneSplit (false);
     seg.setReleasedPlaneSeeding (false);
+    seg.setSupportCheck (false);
   }
   if (origin_code & 64)
   {

@@ -11,6 +11,7 @@
 #include <pcl_rspd/patch_merge.h>
 #include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/plane_support.h>
 #include <pcl_rspd/robust_statistics.h>
 
 #include <pcl/console/print.h>
@@ -585,6 +586,15 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     patches.erase (std::remove_if (patches.begin (), patches.end (),
                                    [] (const PlanarPatch& p) { return p.members.empty (); }),
                    patches.end ());
+  }
+
+  if (params.support_check && !patches.empty ())
+  {
+    // Plane support (departure, see DetectorParameters::support_check): last, so that it judges
+    // the samples every pass before it admitted.
+    labels = labelSamples (points.size (), patches);
+    st.unsupported = releaseUnsupportedMembers (points, graph, noiseBands (points, params, patches),
+                                                params.num_threads, patches, labels);
   }
 
   st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();

@@ -1014,6 +1014,7 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
       {"--assign", "some"}, {"--assign"}, {"--assign", "tail"}, {"--rim-retest", "yes"}, {"--rim-retest"},
       {"--release", "1"}, {"--release"}, {"--edge-sides", "yes"}, {"--edge-sides"}, {"--connected-parts", "1"}, {"--connected-parts"},
       {"--bent-split", "yes"}, {"--bent-split"}, {"--released-planes", "no"}, {"--released-planes"},
+      {"--support", "yes"}, {"--support"},
   };
   for (const auto& args : cases)
   {

@@ -207,6 +207,10 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_support_on.pcd", {"--support", "on"}));
+  // The plane support releases the facade's in-band outliers beyond its rims.
+  ASSERT_EQ (runTool (make, {"facade", dir.file ("f"), "-n", "60000"}).status, 0);
+  EXPECT_FALSE (labels ("f.pcd", "facade.pcd", {}) == labels ("f.pcd", "facade_nosupport.pcd", {"--support=off"}));
   const std::string industrial = labels ("i.pcd", "ind.pcd", {"--outlier-seeds", "keep"});
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_curved.pcd", {"--outlier-seeds", "keep", "--curved-check", "on"}));
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_seeds.pcd", {}));

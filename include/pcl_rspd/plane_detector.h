@@ -108,6 +108,13 @@ struct DetectorParameters
     * of the tread's noise above the nose, which puts it in voxels the riser never enters.
     * false = the paper (and the passes before this one). */
   bool edge_sides = true;
+  /** \brief Departure (plane support, see releaseUnsupportedMembers): last of all, a member on or
+    * beyond its plane's rim whose in-plane gap to the rest of the plane is more than
+    * kSupportGapRatio times its neighbours' gaps, and which lies in no other plane's noise band,
+    * leaves the plane. Growth and the last assignment judge a sample by its distance to the plane,
+    * and an outlier within the band just beyond the rim has the plane's PCA normal. false = the
+    * paper (and the passes before this one). */
+  bool support_check = true;
   /** \brief Departure (connected parts, see splitDisconnectedPlanes): after the far-member release,
     * a plane whose members that pass its inlier test (Sec. 3.3) at its last estimate form two or more
     * parts of at least ε samples that no graph edge joins is split into them. M1 keeps a plane of the
@@ -174,6 +181,7 @@ struct DetectorStatistics
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
+  std::size_t unsupported = 0;       ///< samples released as beyond their plane's rim (support_check)
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check
   bool hit_iteration_cap = false;
   double prepare_seconds = 0.0;      ///< valid samples, centring, spatial order (wall time)

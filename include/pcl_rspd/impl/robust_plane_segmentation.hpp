@@ -334,6 +334,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setEdgeSides (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSupportCheck (bool enable)
+{
+  params_.support_check = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 {
   params_.coplanar_merge = enable;

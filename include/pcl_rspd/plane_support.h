@@ -1,0 +1,61 @@
+/*
+ * pcl_rspd: plane support — a departure that takes off a plane the samples that lie beyond its
+ * other samples, where only outliers can be.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief A member is unsupported when its gap to the nearest other member of its plane, measured
+  * in the plane, is more than this many times the median gap of its neighbours in the plane. For
+  * samples spread uniformly over a plane, the nearest-neighbour distance r has P(r > c · median) =
+  * 2^(-c²), or 2^(-c²/2) on the rim, where half the disc is empty: 6 makes that 4·10⁻⁶ for a rim
+  * sample. */
+constexpr double kSupportGapRatio = 6.0;
+
+/** \brief A member is one-sided, i.e. on or beyond its plane's rim, when the mean of the unit
+  * in-plane directions to its neighbours in the plane is longer than this: 0 for a sample amid its
+  * plane, 2/π ≈ 0.64 on a straight rim, towards 1 beyond it. */
+constexpr double kOneSidedResultant = 0.5;
+
+/** \brief Plane support (departure, DetectorParameters::support_check): release every member that
+  * lies beyond the rest of its plane, where the plane's own samples would be rare.
+  *
+  * Growth and the last assignment admit a sample by its distance to the plane (and growth by its
+  * normal). An outlier within the plane's noise band just beyond its rim passes both: its
+  * k-neighbourhood is the rim, so its PCA normal is the plane's; a voxel metric counts each such
+  * sample as a voxel of false plane (the facade's 15 % outliers in its wall's band beyond the wall
+  * and inside the window openings). A member i of plane l is released when (1) its in-plane gap to
+  * the nearest graph neighbour in l (coincident ones left out) exceeds kSupportGapRatio times the
+  * median of those neighbours' own gaps, or it has no neighbour in l; (2) it is one-sided
+  * (kOneSidedResultant), so a hole amid a plane keeps its samples; and (3) it lies within the noise
+  * band of no other plane that a graph neighbour holds: where two planes meet, the edge-side rule
+  * has settled the owner, and a sample of a sparse plane beside a dense one has few neighbours in
+  * its own. The gaps are ratios of lengths in the sample's neighbourhood, so the rule does not
+  * depend on scale or density. One pass that reads the labels before it: the result does not
+  * depend on the thread count.
+  * \param[in] points samples
+  * \param[in] graph k-NN graph
+  * \param[in] band per patch, the distance within which its own samples lie (the noise band)
+  * \param[in] num_threads OpenMP threads (0: default)
+  * \param[in,out] patches members updated; planes left without members are removed
+  * \param[in,out] labels per-sample patch label, updated (kNoPatch for the released samples)
+  * \return samples released
+  */
+std::size_t
+releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
+                           int num_threads, std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+
+} // namespace rspd
+} // namespace pcl

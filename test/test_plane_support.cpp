@@ -1,0 +1,179 @@
+/*
+ * Tests of the plane-support rule (departure, releaseUnsupportedMembers).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/plane_support.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace pcl::rspd;
+
+namespace
+{
+constexpr int kK = 12;
+
+/** A 20 x 20 grid on z = 0 over [0, 1]^2 (spacing 0.05), all of it plane 0, plus \a extra samples
+  * that plane 0 also holds. */
+struct Scene
+{
+  PointSet set;
+  std::vector<PlanarPatch> patches;
+  std::vector<std::uint32_t> labels;
+};
+
+Scene
+gridWith (const std::vector<Eigen::Vector3f>& extra)
+{
+  Scene s;
+  rspd_test::addRectangle (s.set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20);
+  for (const auto& p : extra)
+  {
+    s.set.points.push_back (p);
+    s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+    s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+  }
+  s.patches = rspd_test::onePatchOfAll (s.set.size (), 0.01, 0.1);
+  s.labels = labelSamples (s.set.size (), s.patches);
+  return s;
+}
+
+std::size_t
+run (Scene& s, int threads = 0)
+{
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.set.points, kK);
+  std::vector<double> band (s.patches.size (), 0.01);
+  return releaseUnsupportedMembers (s.set, g, band, threads, s.patches, s.labels);
+}
+} // namespace
+
+TEST (PlaneSupport, AnInBandSampleFarBeyondTheRimIsReleased)
+{
+  // 0.425 from the rim's nearest sample (8.5 grid spacings), within the band: released.
+  Scene s = gridWith ({{1.4f, 0.525f, 0.001f}});
+  EXPECT_EQ (run (s), 1u);
+  EXPECT_EQ (s.labels.back (), kNoPatch);
+  ASSERT_EQ (s.patches.size (), 1u);
+  EXPECT_EQ (s.patches[0].members.size (), 400u);
+}
+
+TEST (PlaneSupport, ASampleJustBeyondTheRimIsKept)
+{
+  // 0.125 from the rim (2.5 spacings): no sample of a uniform plane can be told from it.
+  Scene s = gridWith ({{1.1f, 0.525f, 0.001f}});
+  EXPECT_EQ (run (s), 0u);
+  EXPECT_EQ (s.patches[0].members.size (), 401u);
+}
+
+TEST (PlaneSupport, TheGridItselfLosesNothing)
+{
+  // Rim and corner samples of a regular grid are one spacing from the next: nothing to release.
+  Scene s = gridWith ({});
+  EXPECT_EQ (run (s), 0u);
+}
+
+TEST (PlaneSupport, ASampleAmidAHoleIsKept)
+{
+  // The same gap, but with the plane all around it: not one-sided, kept.
+  Scene s;
+  for (int i = 0; i < 41; ++i)
+    for (int j = 0; j < 41; ++j)
+    {
+      const Eigen::Vector3f p (i * 0.025f, j * 0.025f, 0.0f);
+      const float r = (p - Eigen::Vector3f (0.5f, 0.5f, 0.0f)).norm ();
+      if (r > 0.2f || r == 0.0f)
+      {
+        s.set.points.push_back (p);
+        s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+        s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+      }
+    }
+  s.patches = rspd_test::onePatchOfAll (s.set.size (), 0.01, 0.1);
+  s.labels = labelSamples (s.set.size (), s.patches);
+  const std::size_t before = s.set.size ();
+  EXPECT_EQ (run (s), 0u);
+  EXPECT_EQ (s.patches[0].members.size (), before);
+}
+
+TEST (PlaneSupport, ASampleInAnotherPlanesBandIsKept)
+{
+  // The far sample of plane 0 lies on plane 1 (x = 1.4), whose samples are its neighbours: where
+  // two planes meet, the edge-side rule has settled the owner.
+  Scene s = gridWith ({{1.4f, 0.525f, 0.0f}});
+  const std::uint32_t far = static_cast<std::uint32_t> (s.set.size () - 1);
+  const auto wall = rspd_test::addRectangle (s.set, {1.4f, 0, 0.025f}, {0, 1, 0}, {0, 0, 1}, 20, 20);
+  s.patches.push_back (rspd_test::makePatch (wall, {1.4, 0.5, 0.5}, {1, 0, 0}, 0.01, 0.1));
+  s.labels = labelSamples (s.set.size (), s.patches);
+  EXPECT_EQ (run (s), 0u);
+  EXPECT_EQ (s.labels[far], 0u);
+
+  // Without plane 1 holding its samples, the same sample is released.
+  s.patches.pop_back ();
+  s.labels = labelSamples (s.set.size (), s.patches);
+  EXPECT_EQ (run (s), 1u);
+  EXPECT_EQ (s.labels[far], kNoPatch);
+}
+
+TEST (PlaneSupport, AMemberWithNoNeighbourInItsPlaneIsReleasedAndEmptyPlanesRemoved)
+{
+  // Plane 1 holds one sample above plane 0's band: it has no neighbour in its plane.
+  Scene s = gridWith ({});
+  s.set.points[210].z () = 0.05f;
+  s.patches[0].members.erase (s.patches[0].members.begin () + 210);
+  s.patches.push_back (rspd_test::makePatch ({210}, {0, 0, 0.5}, {1, 0, 0}, 0.01, 0.1));
+  s.labels = labelSamples (s.set.size (), s.patches);
+  EXPECT_EQ (run (s), 1u);
+  EXPECT_EQ (s.patches.size (), 1u);
+  EXPECT_EQ (s.labels[210], kNoPatch);
+}
+
+TEST (PlaneSupport, CoincidentSamplesAreKept)
+{
+  // Every grid sample 13 times over: each sample's neighbours all coincide with it (gap 0).
+  Scene s;
+  for (int copy = 0; copy < kK + 1; ++copy)
+    rspd_test::addRectangle (s.set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 5, 5);
+  s.patches = rspd_test::onePatchOfAll (s.set.size (), 0.01, 0.1);
+  s.labels = labelSamples (s.set.size (), s.patches);
+  EXPECT_EQ (run (s), 0u);
+}
+
+TEST (PlaneSupport, SameReleaseAtAnyScaleOffsetAndThreadCount)
+{
+  // In-band outliers 0.4-0.8 beyond the rim, one per 45° (so that no two are each other's
+  // support): the released set does not change when the scene is scaled x1000 and moved 1 km, nor
+  // with the thread count.
+  std::mt19937 rng (7);
+  std::uniform_real_distribution<float> jitter (-0.3f, 0.3f), z (-0.004f, 0.004f);
+  std::vector<Eigen::Vector3f> extra;
+  for (int i = 0; i < 8; ++i)
+  {
+    const float angle = static_cast<float> (M_PI / 4.0 * i) + jitter (rng);
+    extra.emplace_back (0.5f + 1.2f * std::cos (angle), 0.5f + 1.2f * std::sin (angle), z (rng));
+  }
+  Scene a = gridWith (extra);
+  Scene b = a;
+  for (auto& p : b.set.points)
+    p = p * 1000.0f + Eigen::Vector3f (1e6f, 0, 0);
+  b.patches[0].setEstimate ([&] {
+    PlaneEstimate e;
+    e.center = Eigen::Vector3d (1e6, 0, 0);
+    e.normal = Eigen::Vector3d::UnitZ ();
+    e.distance_halfwidth = 10.0;
+    e.angle_halfwidth = 0.1;
+    return e;
+  } ());
+  Scene c = a;
+  const std::size_t released = run (a, 1);
+  const NeighborGraph gb = rspd_test::bruteForceGraph (b.set.points, kK);
+  const std::vector<double> band_b (1, 10.0);
+  EXPECT_EQ (releaseUnsupportedMembers (b.set, gb, band_b, 0, b.patches, b.labels), released);
+  EXPECT_EQ (run (c, 2), released);
+  EXPECT_EQ (released, 8u);
+  EXPECT_EQ (a.labels, b.labels);
+  EXPECT_EQ (a.labels, c.labels);
+}
