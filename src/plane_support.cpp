@@ -65,7 +65,8 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
     candidate[i] = !near_other && resultant > kOneSidedResultant;
   }
 
-  // Pass 2: a candidate whose gap is far beyond its neighbours' gaps is released.
+  // Pass 2: a candidate whose gap is far beyond its neighbours' gaps, or with too few neighbours in
+  // its plane to tell, is released.
   std::vector<std::uint8_t> release (labels.size (), 0);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii)
@@ -79,12 +80,17 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
       continue;
     }
     std::vector<float> gaps;
+    std::size_t neighbours = 0;
     graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+      ++neighbours;
       if (labels[m] == labels[i] && std::isfinite (gap[m]))
         gaps.push_back (gap[m]);
     });
-    if (gaps.empty ())
+    if (static_cast<double> (gaps.size ()) < kMinSupportShare * static_cast<double> (neighbours))
+    {
+      release[i] = 1;
       continue;
+    }
     const double typical = medianInPlace (gaps);
     release[i] = typical > 0.0 && static_cast<double> (gap[i]) > kSupportGapRatio * typical;
   }

@@ -118,6 +118,23 @@ TEST (PlaneSupport, ASampleInAnotherPlanesBandIsKept)
   EXPECT_EQ (s.labels[far], kNoPatch);
 }
 
+TEST (PlaneSupport, APairOfOutliersBeyondTheRimUnderAnotherPlaneIsReleased)
+{
+  // Two samples of plane 0 (z = 0), 1.5 beyond its rim and 2 cm apart, under plane 1 (z = 0.2,
+  // out of their band): each is the other's only neighbour in plane 0, so each gap looks typical;
+  // with one neighbour in twelve in their plane, nothing vouches for them (the facade's outliers
+  // behind its wall, in a window's band).
+  Scene s = gridWith ({{2.5f, 0.5f, 0.0f}, {2.52f, 0.5f, 0.0f}});
+  const std::uint32_t first = static_cast<std::uint32_t> (s.set.size () - 2);
+  const auto roof = rspd_test::addRectangle (s.set, {2, 0, 0.2f}, {1, 0, 0}, {0, 1, 0}, 20, 20);
+  s.patches.push_back (rspd_test::makePatch (roof, {2.5, 0.5, 0.2}, {0, 0, 1}, 0.01, 0.1));
+  s.labels = labelSamples (s.set.size (), s.patches);
+  EXPECT_EQ (run (s), 2u);
+  EXPECT_EQ (s.labels[first], kNoPatch);
+  EXPECT_EQ (s.labels[first + 1], kNoPatch);
+  EXPECT_EQ (s.patches[1].members.size (), 400u);
+}
+
 TEST (PlaneSupport, AMemberWithNoNeighbourInItsPlaneIsReleasedAndEmptyPlanesRemoved)
 {
   // Plane 1 holds one sample above plane 0's band: it has no neighbour in its plane.

@@ -24,6 +24,11 @@ namespace rspd
   * sample. */
 constexpr double kSupportGapRatio = 6.0;
 
+/** \brief A member with fewer than this share of its graph neighbours in its own plane cannot be
+  * vouched for by their gaps: a few outliers near one another support one another's gaps. A plane's
+  * own sample has half its neighbourhood in the plane on a straight rim and a quarter in a corner. */
+constexpr double kMinSupportShare = 0.1;
+
 /** \brief A member is one-sided, i.e. on or beyond its plane's rim, when the mean of the unit
   * in-plane directions to its neighbours in the plane is longer than this: 0 for a sample amid its
   * plane, 2/π ≈ 0.64 on a straight rim, towards 1 beyond it. */
@@ -38,7 +43,8 @@ constexpr double kOneSidedResultant = 0.5;
   * sample as a voxel of false plane (the facade's 15 % outliers in its wall's band beyond the wall
   * and inside the window openings). A member i of plane l is released when (1) its in-plane gap to
   * the nearest graph neighbour in l (coincident ones left out) exceeds kSupportGapRatio times the
-  * median of those neighbours' own gaps, or it has no neighbour in l; (2) it is one-sided
+  * median of those neighbours' own gaps, or fewer than kMinSupportShare of its neighbours are in l
+  * (a pair of outliers is each other's support); (2) it is one-sided
   * (kOneSidedResultant), so a hole amid a plane keeps its samples; and (3) it lies within the noise
   * band of no other plane that a graph neighbour holds: where two planes meet, the edge-side rule
   * has settled the owner, and a sample of a sparse plane beside a dense one has few neighbours in
