@@ -110,8 +110,8 @@ struct DetectorParameters
   bool edge_sides = true;
   /** \brief Departure (plane support, see releaseUnsupportedMembers): last of all, a member on or
     * beyond its plane's rim whose in-plane gap to the rest of the plane is more than
-    * kSupportGapRatio times its neighbours' gaps, and which lies in no other plane's noise band,
-    * leaves the plane. Growth and the last assignment judge a sample by its distance to the plane,
+    * kSupportGapRatio times its neighbours' gaps (or with under kMinSupportShare of its neighbours in
+    * the plane), and which lies in no other plane's noise band, leaves the plane. Growth and the last assignment judge a sample by its distance to the plane,
     * and an outlier within the band just beyond the rim has the plane's PCA normal. false = the
     * paper (and the passes before this one). */
   bool support_check = true;

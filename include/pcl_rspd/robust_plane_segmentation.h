@@ -103,9 +103,10 @@ struct RobustPlane
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
   *    by the same rule and holds it within its noise band, else for none;
   *  - plane support (setSupportCheck(false) for the paper): last, a member on or beyond its plane's
-  *    rim whose in-plane gap to the rest of the plane is more than 6 times its neighbours' gaps, and
-  *    which lies in no other plane's noise band, leaves the plane (outliers within the band just
-  *    beyond a rim have the plane's PCA normal and pass growth);
+  *    rim whose in-plane gap to the rest of the plane is more than 6 times its neighbours' gaps (or
+  *    with under a tenth of its neighbours in the plane), and which lies in no other plane's noise
+  *    band, leaves the plane (outliers within the band just beyond a rim have the plane's PCA normal
+  *    and pass growth);
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals), and samples
   *    inside one plane join it if their normal passes its MND and they lie within 3 robust standard
@@ -342,7 +343,8 @@ public:
 
   /** \brief Plane support (default true; false = the paper): last of all, a member on or beyond its
     * plane's rim whose in-plane gap to the plane's nearest other sample is more than 6 times its
-    * neighbours' gaps, and which lies in no other plane's noise band, leaves the plane for none. See
+    * neighbours' gaps (or with under a tenth of its neighbours in the plane), and which lies in no
+    * other plane's noise band, leaves the plane for none. See
     * pcl::rspd::releaseUnsupportedMembers and pcl::rspd::DetectorParameters::support_check. */
   void
   setSupportCheck (bool enable);
