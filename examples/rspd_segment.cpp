@@ -81,7 +81,7 @@ const char* const kHelp =
     "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
     "  --assign M       once growth is stable, give points growth left out to a neighbouring plane\n"
     "                   by distance alone: next to two or more planes ('edges'); those and, inside\n"
-    "                   one plane, points with its normal within 3 robust sigma of it ('tails', the\n"
+    "                   one plane, points with its normal within 4 robust sigma of it ('tails', the\n"
     "                   default); next to any ('all'); or none ('none', the paper)\n"
     "  --threads N      OpenMP threads (default: OpenMP's default, OMP_NUM_THREADS is honoured)\n"
     "  -v               progress and per-stage timings on stderr\n"

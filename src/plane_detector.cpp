@@ -31,10 +31,16 @@ namespace
 /** Robust standard deviations that bound a plane's noise (a Gaussian's 3 σ: 99.7 %). */
 constexpr double kBandSigmas = 3.0;
 
-/** Each patch's distance bound for its own samples: max(MDP, 3 σ), σ = 1.4826 median |d| of its
-  * members about its plane. MDP = median + α MAD of |d| (Eq. 6) is about 2.45 σ on Gaussian noise. */
+/** Robust standard deviations within which the last assignment takes a plane's noise tail (Tails):
+  * a Gaussian leaves 6·10⁻⁵ of its samples beyond 4 σ, under one of a 10,000-sample plane, where 3 σ
+  * leaves out 27 of them, each alone in a voxel of the plane's noise rim. */
+constexpr double kTailSigmas = 4.0;
+
+/** Each patch's distance bound for its own samples: max(MDP, \a sigmas σ), σ = 1.4826 median |d| of
+  * its members about its plane. MDP = median + α MAD of |d| (Eq. 6) is about 2.45 σ on Gaussian noise. */
 std::vector<double>
-noiseBands (const PointSet& points, const DetectorParameters& params, const std::vector<PlanarPatch>& patches)
+noiseBands (const PointSet& points, const DetectorParameters& params, const std::vector<PlanarPatch>& patches,
+            double sigmas = kBandSigmas)
 {
   std::vector<double> band (patches.size ());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
@@ -44,7 +50,7 @@ noiseBands (const PointSet& points, const DetectorParameters& params, const std:
     std::vector<float> d (patch.members.size ());
     for (std::size_t t = 0; t < d.size (); ++t)
       d[t] = static_cast<float> (std::abs ((points.points[patch.members[t]].cast<double> () - patch.center).dot (patch.normal)));
-    band[l] = d.empty () ? patch.mdp : std::max (patch.mdp, kBandSigmas * kMadScale * medianInPlace (d));
+    band[l] = d.empty () ? patch.mdp : std::max (patch.mdp, sigmas * kMadScale * medianInPlace (d));
   }
   return band;
 }
@@ -105,7 +111,7 @@ applyChoices (std::vector<std::uint32_t>& open, std::vector<std::uint32_t>& choi
   * condition is left out on purpose: PCA normals bend within a neighbourhood radius of an edge,
   * which is exactly where growth stops short. Edges: only samples next to two or more planes (an
   * edge band), so clutter and outliers beside a single plane stay out. Tails: also a sample most of
-  * whose neighbours hold one plane, if its normal passes that plane's MND and |d| <= 3 σ, σ =
+  * whose neighbours hold one plane, if its normal passes that plane's MND and |d| <= 4 σ, σ =
   * 1.4826 median |d| of the plane's members: MDP (median + α MAD of |d|, Eq. 6) is about 2.45 σ on Gaussian noise, so
   * growth leaves the plane's own tail out, which a voxel-based count sees as a rim of missed
   * voxels on each side of a noisy plane. Each round reads the labels of the round before, so the
@@ -118,7 +124,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   const bool edges_only = params.final_assignment == FinalAssignment::Edges ||
                           params.final_assignment == FinalAssignment::Tails;
   const bool tails = params.final_assignment == FinalAssignment::Tails;
-  const std::vector<double> tail_limit = tails ? noiseBands (points, params, patches) : std::vector<double> ();
+  const std::vector<double> tail_limit = tails ? noiseBands (points, params, patches, kTailSigmas) : std::vector<double> ();
   std::vector<std::uint32_t> left;
   for (std::uint32_t i = 0; i < labels.size (); ++i)
     if (labels[i] == kNoPatch)

@@ -23,7 +23,7 @@ enum class FinalAssignment
   None,  ///< the paper: a sample growth did not take stays unassigned
   Edges, ///< samples whose neighbours belong to two or more planes (edge bands of bent normals)
   Tails, ///< Edges, and a plane's noise tail: samples most of whose neighbours hold one plane,
-         ///< within 3 robust standard deviations of it, whose normal passes its MND
+         ///< within 4 robust standard deviations of it, whose normal passes its MND
   All    ///< every sample with a labelled neighbour (also takes clutter and outliers near a plane)
 };
 
@@ -82,7 +82,7 @@ struct DetectorParameters
     * their graph neighbours once grow-merge is stable, by distance alone (|d| <= MDP, nearest
     * relative to MDP; the sample must be among its neighbour's k nearest too); with Tails also a
     * sample most of whose neighbours hold one plane, if its normal passes that plane's MND and
-    * |d| <= 3 σ of the plane (σ = 1.4826 median |d| of its members). */
+    * |d| <= 4 σ of the plane (σ = 1.4826 median |d| of its members). */
   FinalAssignment final_assignment = FinalAssignment::Tails;
   /** \brief Departure (far members): once grow-merge and the small-plane pass are stable, members
     * farther from their plane's last estimate than max(MDP, 3 σ) (σ = 1.4826 median |d| of its

@@ -109,7 +109,7 @@ struct RobustPlane
   *    and pass growth);
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals), and samples
-  *    inside one plane join it if their normal passes its MND and they lie within 3 robust standard
+  *    inside one plane join it if their normal passes its MND and they lie within 4 robust standard
   *    deviations of it (the noise tail MDP cuts off);
   *  - robust normals are available, off by default for their cost (setNormalFit(TrimmedPlane)): the
   *    reweighted least-trimmed-squares plane of the same k-neighbourhood (pcl::rspd::refineNormalsTrimmed),
