@@ -24,8 +24,8 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
   constexpr float kNone = std::numeric_limits<float>::infinity ();
 
   // Pass 1: each member's in-plane gap to its plane's nearest other sample among its neighbours
-  // (infinite when it has none; 0 when they all coincide with it), and whether it is a candidate:
-  // one-sided and within no other plane's band.
+  // (infinite when it has none; 0 when one coincides with it or lies on its normal line), and
+  // whether it is a candidate: one-sided and within no other plane's band.
   std::vector<float> gap (labels.size (), kNone);
   std::vector<std::uint8_t> candidate (labels.size (), 0);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)

@@ -42,15 +42,14 @@ constexpr double kOneSidedResultant = 0.5;
   * k-neighbourhood is the rim, so its PCA normal is the plane's; a voxel metric counts each such
   * sample as a voxel of false plane (the facade's 15 % outliers in its wall's band beyond the wall
   * and inside the window openings). A member i of plane l is released when (1) its in-plane gap to
-  * the nearest graph neighbour in l (coincident ones left out) exceeds kSupportGapRatio times the
-  * median of those neighbours' own gaps, or fewer than kMinSupportShare of its neighbours are in l
-  * (a pair of outliers is each other's support); (2) it is one-sided
-  * (kOneSidedResultant), so a hole amid a plane keeps its samples; and (3) it lies within the noise
-  * band of no other plane that a graph neighbour holds: where two planes meet, the edge-side rule
-  * has settled the owner, and a sample of a sparse plane beside a dense one has few neighbours in
-  * its own. The gaps are ratios of lengths in the sample's neighbourhood, so the rule does not
-  * depend on scale or density. One pass that reads the labels before it: the result does not
-  * depend on the thread count.
+  * the nearest graph neighbour in l (0 for one that coincides with it) exceeds kSupportGapRatio
+  * times the median of those neighbours' own gaps, or fewer than kMinSupportShare of its neighbours
+  * are in l (a pair of outliers is each other's support); (2) it is one-sided (kOneSidedResultant),
+  * so a hole amid a plane keeps its samples; and (3) it lies within the noise band of no other plane
+  * that a graph neighbour holds: where two planes meet, the edge-side rule has settled the owner, and
+  * a sample of a sparse plane beside a dense one has few neighbours in its own. The gaps are ratios
+  * of lengths in the sample's neighbourhood, so the rule does not depend on scale or density. Two
+  * passes that read the labels before them: the result does not depend on the thread count.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] band per patch, the distance within which its own samples lie (the noise band)
