@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 
@@ -36,13 +37,11 @@ constexpr double kBandSigmas = 3.0;
   * leaves out 27 of them, each alone in a voxel of the plane's noise rim. */
 constexpr double kTailSigmas = 4.0;
 
-/** Each patch's distance bound for its own samples: max(MDP, \a sigmas σ), σ = 1.4826 median |d| of
-  * its members about its plane. MDP = median + α MAD of |d| (Eq. 6) is about 2.45 σ on Gaussian noise. */
+/** Each patch's median |d| of its members about its plane (NaN for a patch without members). */
 std::vector<double>
-noiseBands (const PointSet& points, const DetectorParameters& params, const std::vector<PlanarPatch>& patches,
-            double sigmas = kBandSigmas)
+medianDistances (const PointSet& points, const DetectorParameters& params, const std::vector<PlanarPatch>& patches)
 {
-  std::vector<double> band (patches.size ());
+  std::vector<double> median (patches.size ());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
   for (std::ptrdiff_t l = 0; l < static_cast<std::ptrdiff_t> (patches.size ()); ++l)
   {
@@ -50,9 +49,28 @@ noiseBands (const PointSet& points, const DetectorParameters& params, const std:
     std::vector<float> d (patch.members.size ());
     for (std::size_t t = 0; t < d.size (); ++t)
       d[t] = static_cast<float> (std::abs ((points.points[patch.members[t]].cast<double> () - patch.center).dot (patch.normal)));
-    band[l] = d.empty () ? patch.mdp : std::max (patch.mdp, sigmas * kMadScale * medianInPlace (d));
+    median[l] = d.empty () ? std::numeric_limits<double>::quiet_NaN () : medianInPlace (d);
   }
+  return median;
+}
+
+/** Each patch's distance bound for its own samples: max(MDP, \a sigmas σ), σ = 1.4826 median |d| of
+  * its members about its plane (\a median from medianDistances). MDP = median + α MAD of |d| (Eq. 6)
+  * is about 2.45 σ on Gaussian noise. */
+std::vector<double>
+bandsOf (const std::vector<PlanarPatch>& patches, const std::vector<double>& median, double sigmas)
+{
+  std::vector<double> band (patches.size ());
+  for (std::size_t l = 0; l < patches.size (); ++l)
+    band[l] = std::isnan (median[l]) ? patches[l].mdp : std::max (patches[l].mdp, sigmas * kMadScale * median[l]);
   return band;
+}
+
+/** The noise bands at kBandSigmas (see bandsOf). */
+std::vector<double>
+noiseBands (const PointSet& points, const DetectorParameters& params, const std::vector<PlanarPatch>& patches)
+{
+  return bandsOf (patches, medianDistances (points, params, patches), kBandSigmas);
 }
 
 /** Sec. 3.5: re-estimate C, N, MDP and MND of every patch that grew by more than the update ratio
@@ -126,8 +144,10 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   const bool edges_only = params.final_assignment == FinalAssignment::Edges ||
                           params.final_assignment == FinalAssignment::Tails;
   const bool tails = params.final_assignment == FinalAssignment::Tails;
-  const std::vector<double> tail_limit = tails ? noiseBands (points, params, patches, kTailSigmas) : std::vector<double> ();
-  const std::vector<double> edge_limit = tails ? noiseBands (points, params, patches) : std::vector<double> ();
+  // One median per plane serves both of Tails' bounds.
+  const std::vector<double> median = tails ? medianDistances (points, params, patches) : std::vector<double> ();
+  const std::vector<double> tail_limit = tails ? bandsOf (patches, median, kTailSigmas) : std::vector<double> ();
+  const std::vector<double> edge_limit = tails ? bandsOf (patches, median, kBandSigmas) : std::vector<double> ();
   std::vector<std::uint32_t> left;
   for (std::uint32_t i = 0; i < labels.size (); ++i)
     if (labels[i] == kNoPatch)
