@@ -23,76 +23,136 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
   const int threads = resolveThreads (num_threads);
   constexpr float kNone = std::numeric_limits<float>::infinity ();
 
-  // Pass 1: each member's in-plane gap to its plane's nearest other sample among its neighbours
-  // (infinite when it has none; 0 when one coincides with it or lies on its normal line), and
-  // whether it is a candidate: one-sided and within no other plane's band.
+  // Per member, from its neighbours in its plane: the in-plane gap to the nearest (infinite when it
+  // has none; 0 when one coincides with it or lies on its normal line), the depth (how far it lies
+  // beyond all of them along their mean direction) and whether it is a candidate (one-sided, in no
+  // other plane's band). Kept across rounds: a round recomputes only what a release changed.
   std::vector<float> gap (labels.size (), kNone);
+  std::vector<float> depth (labels.size (), 0.0f);
   std::vector<std::uint8_t> candidate (labels.size (), 0);
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
-  for (std::ptrdiff_t ii = 0; ii < n; ++ii)
-  {
-    const std::uint32_t i = static_cast<std::uint32_t> (ii);
-    const std::uint32_t l = labels[i];
-    if (l == kNoPatch)
-      continue;
-    const Eigen::Vector3d& normal = patches[l].normal;
-    const Eigen::Vector3d p = points.points[i].cast<double> ();
-    double nearest = HUGE_VAL;
-    Eigen::Vector3d directions = Eigen::Vector3d::Zero ();
-    int directed = 0;
-    bool near_other = false;
-    graph.forEachNeighbor (i, [&] (std::uint32_t m) {
-      const std::uint32_t o = labels[m];
-      if (o == kNoPatch)
-        return;
-      if (o != l)
-      {
-        near_other = near_other || std::abs ((p - patches[o].center).dot (patches[o].normal)) <= band[o];
-        return;
-      }
-      const Eigen::Vector3d q = points.points[m].cast<double> () - p;
-      const Eigen::Vector3d t = q - q.dot (normal) * normal;
-      const double length = t.norm ();
-      nearest = std::min (nearest, length);
-      if (length > 0.0)
-      {
-        directions += t / length;
-        ++directed;
-      }
-    });
-    gap[i] = static_cast<float> (nearest);
-    const double resultant = directed > 0 ? directions.norm () / directed : 1.0;
-    candidate[i] = !near_other && resultant > kOneSidedResultant;
-  }
+  std::vector<std::uint8_t> stale (labels.size (), 1);    // its own figures must be recomputed
+  std::vector<std::uint8_t> affected (labels.size (), 1); // its verdict may have changed
+  std::vector<std::uint8_t> release (labels.size (), 0);  // released in an earlier round
+  std::vector<std::uint8_t> fresh (labels.size (), 0);    // released in this round
 
-  // Pass 2: a candidate whose gap is far beyond its neighbours' gaps, or with too few neighbours in
-  // its plane to tell, is released.
-  std::vector<std::uint8_t> release (labels.size (), 0);
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
-  for (std::ptrdiff_t ii = 0; ii < n; ++ii)
+  for (int round = 0; round < kSupportRounds; ++round)
   {
-    const std::uint32_t i = static_cast<std::uint32_t> (ii);
-    if (!candidate[i])
-      continue;
-    if (std::isinf (gap[i]))
+    // Pass 1: the figures of the stale members.
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii)
     {
-      release[i] = 1; // no neighbour in its own plane
-      continue;
+      const std::uint32_t i = static_cast<std::uint32_t> (ii);
+      const std::uint32_t l = labels[i];
+      if (l == kNoPatch || !stale[i])
+        continue;
+      const Eigen::Vector3d& normal = patches[l].normal;
+      const Eigen::Vector3d p = points.points[i].cast<double> ();
+      const auto inPlane = [&] (std::uint32_t m) {
+        const Eigen::Vector3d q = points.points[m].cast<double> () - p;
+        return Eigen::Vector3d (q - q.dot (normal) * normal);
+      };
+      double nearest = HUGE_VAL;
+      Eigen::Vector3d directions = Eigen::Vector3d::Zero ();
+      int directed = 0;
+      bool near_other = false;
+      graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+        const std::uint32_t o = labels[m];
+        if (o == kNoPatch)
+          return;
+        if (o != l)
+        {
+          near_other = near_other || std::abs ((p - patches[o].center).dot (patches[o].normal)) <= band[o];
+          return;
+        }
+        const Eigen::Vector3d t = inPlane (m);
+        const double length = t.norm ();
+        nearest = std::min (nearest, length);
+        if (length > 0.0)
+        {
+          directions += t / length;
+          ++directed;
+        }
+      });
+      gap[i] = static_cast<float> (nearest);
+      const double resultant = directed > 0 ? directions.norm () / directed : 1.0;
+      candidate[i] = !near_other && resultant > kOneSidedResultant;
+      depth[i] = 0.0f;
+      if (candidate[i] && directed > 0 && directions.norm () > 0.0)
+      {
+        // Depth: the least offset, along the mean direction into the plane, of its plane's
+        // neighbours; a sample ahead of them all is beyond the plane's rim by that much.
+        const Eigen::Vector3d inward = directions.normalized ();
+        double least = HUGE_VAL;
+        graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+          if (labels[m] == l)
+            least = std::min (least, inPlane (m).dot (inward));
+        });
+        depth[i] = static_cast<float> (least);
+      }
     }
-    std::vector<float> gaps;
-    std::size_t neighbours = 0;
-    graph.forEachNeighbor (i, [&] (std::uint32_t m) {
-      ++neighbours;
-      if (labels[m] == labels[i] && std::isfinite (gap[m]))
-        gaps.push_back (gap[m]);
-    });
-    if (static_cast<double> (gaps.size ()) < kMinSupportShare * static_cast<double> (neighbours))
+
+    // Pass 2: a candidate whose gap or depth is far beyond its neighbours' gaps, or with too few
+    // neighbours in its plane to tell, is released.
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii)
     {
-      release[i] = 1;
-      continue;
+      const std::uint32_t i = static_cast<std::uint32_t> (ii);
+      fresh[i] = 0;
+      if (labels[i] == kNoPatch || !candidate[i] || !affected[i])
+        continue;
+      if (std::isinf (gap[i]))
+      {
+        fresh[i] = 1; // no neighbour in its own plane
+        continue;
+      }
+      std::vector<float> gaps;
+      std::size_t neighbours = 0;
+      graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+        ++neighbours;
+        if (labels[m] == labels[i] && std::isfinite (gap[m]))
+          gaps.push_back (gap[m]);
+      });
+      if (static_cast<double> (gaps.size ()) < kMinSupportShare * static_cast<double> (neighbours))
+      {
+        fresh[i] = 1;
+        continue;
+      }
+      const double typical = medianInPlace (gaps);
+      fresh[i] = typical > 0.0 && (static_cast<double> (gap[i]) > kSupportGapRatio * typical ||
+                                   static_cast<double> (depth[i]) > kSupportDepthRatio * typical);
     }
-    const double typical = medianInPlace (gaps);
-    release[i] = typical > 0.0 && static_cast<double> (gap[i]) > kSupportGapRatio * typical;
+
+    std::size_t now = 0;
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+      if (fresh[i])
+      {
+        release[i] = 1;
+        labels[i] = kNoPatch;
+        ++now;
+      }
+    if (now == 0)
+      break;
+
+    // Peeling: a release exposes the members behind it. Stale: a neighbour was released (its
+    // figures change); affected: it or a neighbour is stale (its verdict reads their gaps).
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii)
+    {
+      const std::uint32_t i = static_cast<std::uint32_t> (ii);
+      bool s = false;
+      if (labels[i] != kNoPatch)
+        graph.forEachNeighbor (i, [&] (std::uint32_t m) { s = s || fresh[m] != 0; });
+      stale[i] = s;
+    }
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii)
+    {
+      const std::uint32_t i = static_cast<std::uint32_t> (ii);
+      bool a = stale[i] != 0;
+      if (labels[i] != kNoPatch && !a)
+        graph.forEachNeighbor (i, [&] (std::uint32_t m) { a = a || stale[m] != 0; });
+      affected[i] = a;
+    }
   }
 
   std::size_t released = 0;

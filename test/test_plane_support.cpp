@@ -63,10 +63,33 @@ TEST (PlaneSupport, AnInBandSampleFarBeyondTheRimIsReleased)
 
 TEST (PlaneSupport, ASampleJustBeyondTheRimIsKept)
 {
-  // 0.125 from the rim (2.5 spacings): no sample of a uniform plane can be told from it.
-  Scene s = gridWith ({{1.1f, 0.525f, 0.001f}});
+  // 0.075 from the rim (1.5 spacings, depth 1.5 median gaps): a rim sample could lie there.
+  Scene s = gridWith ({{1.05f, 0.525f, 0.001f}});
   EXPECT_EQ (run (s), 0u);
   EXPECT_EQ (s.patches[0].members.size (), 401u);
+}
+
+TEST (PlaneSupport, ASampleAFewSpacingsBeyondAStraightRimIsReleasedByItsDepth)
+{
+  // 0.125 from the rim: its gap is 2.5 median gaps (kept by the gap rule alone), but it lies 2.5
+  // median gaps ahead of every rim sample, where a straight rim leaves none.
+  Scene s = gridWith ({{1.1f, 0.525f, 0.001f}});
+  EXPECT_EQ (run (s), 1u);
+  EXPECT_EQ (s.labels.back (), kNoPatch);
+  EXPECT_EQ (s.patches[0].members.size (), 400u);
+}
+
+TEST (PlaneSupport, ReleasesPeelOutliersThatShieldEachOther)
+{
+  // The inner outlier (3 median gaps out) is not ahead of the outer one, which shields it; once the
+  // outer one (3.5 gaps beyond the inner) is released, the inner one is ahead of the rim and goes too.
+  Scene s = gridWith ({{1.125f, 0.525f, 0.0f}, {1.3f, 0.525f, 0.0f}});
+  EXPECT_EQ (run (s), 2u);
+  EXPECT_EQ (s.patches[0].members.size (), 400u);
+
+  // The inner one alone goes in the first round, the outer one alone too: each is ahead of the rim.
+  Scene inner = gridWith ({{1.125f, 0.525f, 0.0f}});
+  EXPECT_EQ (run (inner), 1u);
 }
 
 TEST (PlaneSupport, TheGridItselfLosesNothing)

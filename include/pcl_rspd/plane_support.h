@@ -24,6 +24,20 @@ namespace rspd
   * sample. */
 constexpr double kSupportGapRatio = 6.0;
 
+/** \brief A one-sided member is unsupported when it lies ahead of all its neighbours in its plane,
+  * along their mean direction from it, by more than this many times the median gap of those
+  * neighbours. On a straight rim of a uniform plane the nearest of the ~k samples in the strip
+  * behind a rim sample lies ahead of it by an exponential distance of mean ~s²/(2R) (s the sample
+  * spacing, R the neighbourhood's radius), far below the gap (~0.47 s): for k = 50, P(depth > c ·
+  * median gap) ≈ e^(-5.3 c), 2.5·10⁻⁵ for 2. An outlier a few spacings beyond the rim, whose gap is
+  * still ordinary, is ahead by about its distance. */
+constexpr double kSupportDepthRatio = 2.0;
+
+/** \brief Rounds of release at most: each round's releases expose the members behind them (a
+  * small cluster of outliers beyond a rim, each the other's support), and only their neighbourhoods
+  * are judged again. The bound keeps the cost linear whatever the cloud. */
+constexpr int kSupportRounds = 8;
+
 /** \brief A member with fewer than this share of its graph neighbours in its own plane cannot be
   * vouched for by their gaps: a few outliers near one another support one another's gaps. A plane's
   * own sample has half its neighbourhood in the plane on a straight rim and a quarter in a corner. */
@@ -43,13 +57,16 @@ constexpr double kOneSidedResultant = 0.5;
   * sample as a voxel of false plane (the facade's 15 % outliers in its wall's band beyond the wall
   * and inside the window openings). A member i of plane l is released when (1) its in-plane gap to
   * the nearest graph neighbour in l (0 for one that coincides with it) exceeds kSupportGapRatio
-  * times the median of those neighbours' own gaps, or fewer than kMinSupportShare of its neighbours
-  * are in l (a pair of outliers is each other's support); (2) it is one-sided (kOneSidedResultant),
+  * times the median of those neighbours' own gaps, or it lies ahead of all of them by more than
+  * kSupportDepthRatio times that median (an outlier a few spacings beyond a straight rim), or fewer
+  * than kMinSupportShare of its neighbours are in l (a pair of outliers is each other's support); (2) it is one-sided (kOneSidedResultant),
   * so a hole amid a plane keeps its samples; and (3) it lies within the noise band of no other plane
   * that a graph neighbour holds: where two planes meet, the edge-side rule has settled the owner, and
   * a sample of a sparse plane beside a dense one has few neighbours in its own. The gaps are ratios
-  * of lengths in the sample's neighbourhood, so the rule does not depend on scale or density. Two
-  * passes that read the labels before them: the result does not depend on the thread count.
+  * of lengths in the sample's neighbourhood, so the rule does not depend on scale or density. The
+  * rule peels: up to kSupportRounds rounds, each judging again the members next to the last round's
+  * releases. Each round's passes read the labels before it: the result does not depend on the
+  * thread count.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] band per patch, the distance within which its own samples lie (the noise band)
