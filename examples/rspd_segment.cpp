@@ -44,7 +44,9 @@ const char* const kHelp =
     "  --planes OUT.csv one row per plane: label,a,b,c,d,points,cx,cy,cz,extent_u,extent_v,mdp,mnd\n"
     "  --png OUT.png    two views of the labelled cloud, from above and from below\n"
     "                   (--png-size WxH, default 1600x800)\n"
-    "  -k N             neighbours per point for normals and the growth graph (default 50)\n"
+    "  -k N             neighbours per point for normals and the growth graph: 3..1000, or 0 for\n"
+    "                   automatic (the default): eps/2 between 15 and 50, i.e. the paper's 50 from\n"
+    "                   100,000 points on\n"
     "  --normal-scale S estimated normals from the k-neighbourhood ('fixed', the paper's), from the\n"
     "                   finest scale that resolves a surface where noise swamps the k-neighbourhood\n"
     "                   ('adaptive'), or that only when it swamps most of them ('auto', the\n"
@@ -62,8 +64,9 @@ const char* const kHelp =
     "                   beyond the line where they meet leaves it for the other plane or none\n"
     "                   (default on; off = the paper)\n"
     "  --support on|off last, a point on or beyond its plane's rim, more than 6 times its\n"
-    "                   neighbours' spacing from the rest of the plane and in no other plane's\n"
-    "                   noise band, leaves it (default on; off = the paper)\n"
+    "                   neighbours' spacing from the rest of the plane or more than 2 ahead of\n"
+    "                   all of it, and in no other plane's noise band, leaves it; repeated\n"
+    "                   while that exposes more (default on; off = the paper)\n"
     "  --connected-parts on|off  a plane whose points that pass its inlier test form separate\n"
     "                   parts (no neighbour link between them) is split into them (default on;\n"
     "                   off = the paper)\n"
@@ -98,7 +101,7 @@ struct Options
   std::string png;
   int png_width = 1600;
   int png_height = 800;
-  int k = 50;
+  int k = 0; // automatic
   int threads = 0;  // 0: leave OpenMP's default
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
   bool coplanar_merge = true;
@@ -175,8 +178,8 @@ parseArguments (int argc, char** argv)
     else if (arg == "-k" || arg == "--neighbours" || arg == "--neighbors")
     {
       const std::string v = value ();
-      if (!parseInteger (v, 3, 1000, o.k))
-        throw UsageError{"-k needs an integer from 3 to 1000 (got '" + v + "')"};
+      if (!parseInteger (v, 0, 1000, o.k) || (o.k > 0 && o.k < 3))
+        throw UsageError{"-k needs 0 (automatic) or an integer from 3 to 1000 (got '" + v + "')"};
     }
     else if (arg == "--normal-scale")
     {
@@ -366,7 +369,7 @@ run (const Options& o)
   seg.setFinalAssignment (o.assignment);
   if (o.threads > 0)
     seg.setNumberOfThreads (static_cast<unsigned int> (o.threads));
-  log ("detecting planes (k = %d, %s threads, %s normals)", o.k,
+  log ("detecting planes (k = %s, %s threads, %s normals)", o.k > 0 ? std::to_string (o.k).c_str () : "automatic",
        o.threads > 0 ? std::to_string (o.threads).c_str () : "default",
        cloud.normals ? "file"
                      : (o.normal_scale == pcl::rspd::NormalScale::Fixed
@@ -380,10 +383,10 @@ run (const Options& o)
                  (o.verbose ? std::string () : std::string (" (run with -v for details)")));
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
-  log ("detect: %.3f s, %zu planes (eps = %zu, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
+  log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
        "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu beyond a rim released%s)",
-       t_detect, planes.size (), seg.getResolvedMinPatchSize (), stats.cells_tested, stats.seed_patches,
+       t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "

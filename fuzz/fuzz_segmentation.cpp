@@ -9,7 +9,7 @@
  *
  * Input layout (bytes past the end read as 0, so every input is valid):
  *   0-1  n = (b0 | (b1 & 1) << 8) % 401 points
- *   2    k = 3 + b2 % 58 (setNumberOfNeighbours, 3..60)
+ *   2    k = b2 % 59: 0 automatic, else 2 + b2 % 59 (setNumberOfNeighbours, 3..60)
  *   3    flags: 1 normals given, 2 indices given, 4 KdTree search method, 8 epsilon set directly,
  *        16 paper's letter (zero floors), 32 no normal alignment, 64 NaN/Inf/huge values,
  *        128 run twice (second object, SAC-style segment) and compare
@@ -282,7 +282,8 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   Bytes in (data, size);
   const std::uint8_t b0 = in.next (), b1 = in.next ();
   const std::size_t n = (b0 | (static_cast<std::size_t> (b1 & 1) << 8)) % 401;
-  const int k = 3 + in.next () % 58;
+  const int kb = in.next () % 59;
+  const int k = kb == 0 ? 0 : 2 + kb; // 0: automatic
   const std::uint8_t flags = in.next ();
   const std::uint8_t shape = in.next ();
   const int lattice = 1 + in.next () % 40;
@@ -457,7 +458,10 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   }
   // With a search method, coordinates beyond half the float range are refused: FLANN cannot split
   // them (fuzz/regressions/README.md).
-  bool expected_ok = n > 0 && indices_in_range && !normals_mismatch && n_valid > static_cast<std::size_t> (k) &&
+  // k = 0: the automatic k of the resolved ε (0.1 % of the valid samples, at least 10, or set).
+  const std::size_t epsilon = (flags & 8) ? std::size_t (3 + b8 % 40) : std::max<std::size_t> (10, (n_valid + 999) / 1000);
+  const int k_used = k > 0 ? k : pcl::rspd::automaticNumberOfNeighbours (epsilon);
+  bool expected_ok = n > 0 && indices_in_range && !normals_mismatch && n_valid > static_cast<std::size_t> (k_used) &&
                      !(with_search && beyond_half_range);
   // FLANN (the KdTree search method) cannot rank neighbours whose squared distances overflow a
   // float, and then returns fewer than k: the class must fail cleanly, which is checked, but
@@ -485,9 +489,10 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
     expected_ok = false;
   if (verbose)
     std::fprintf (stderr, "n %zu, valid %zu, k %d, normals %d, indices %d, search %d, geometry %d: %s, %zu planes\n",
-                  n, n_valid, k, with_normals, with_indices, with_search, geometry,
+                  n, n_valid, k_used, with_normals, with_indices, with_search, geometry,
                   seg.hasResult () ? "ok" : "failed", planes.size ());
   checkResult (*cloud, valid, expected_ok, seg, coefficients, planes);
+  FUZZ_CHECK (!seg.hasResult () || seg.getNumberOfNeighboursUsed () == k_used);
 
   FUZZ_CHECK (sameCloud (*cloud, cloud_copy));
   FUZZ_CHECK (sameNormals (*normals, normals_copy));

@@ -142,23 +142,64 @@ TEST (RobustPlaneSegmentation, SegmentWithIndicesOutOfRange)
 
 TEST (RobustPlaneSegmentation, SegmentWithFewerPointsThanK)
 {
-  auto cloud = boxCorner (10); // 30 points, k = 50
+  auto cloud = boxCorner (10); // 30 points
   pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
   seg.setInputCloud (cloud);
+  seg.setNumberOfNeighbours (50);
   std::vector<pcl::ModelCoefficients> c;
   std::vector<pcl::PointIndices> i;
   seg.segment (c, i);
   EXPECT_TRUE (i.empty ());
+  EXPECT_FALSE (seg.hasResult ());
   seg.setNumberOfNeighbours (10); // now enough
   seg.segment (c, i);
   EXPECT_TRUE (seg.hasResult ());
+  EXPECT_EQ (seg.getNumberOfNeighboursUsed (), 10);
+  seg.setNumberOfNeighbours (0); // automatic: 15 (ε = 10), enough for 30 points too
+  EXPECT_EQ (seg.getNumberOfNeighbours (), 0);
+  seg.segment (c, i);
+  EXPECT_TRUE (seg.hasResult ());
+  EXPECT_EQ (seg.getNumberOfNeighboursUsed (), 15);
+  auto tiny = boxCorner (5); // 15 points: not more than the automatic k
+  seg.setInputCloud (tiny);
+  seg.segment (c, i);
+  EXPECT_TRUE (i.empty ());
+  EXPECT_FALSE (seg.hasResult ());
+}
+
+TEST (RobustPlaneSegmentation, AutomaticNumberOfNeighboursIsHalfEpsilonBetween15And50)
+{
+  EXPECT_EQ (pcl::rspd::automaticNumberOfNeighbours (10), 15);
+  EXPECT_EQ (pcl::rspd::automaticNumberOfNeighbours (31), 15);
+  EXPECT_EQ (pcl::rspd::automaticNumberOfNeighbours (50), 25);
+  EXPECT_EQ (pcl::rspd::automaticNumberOfNeighbours (99), 49);
+  EXPECT_EQ (pcl::rspd::automaticNumberOfNeighbours (100), 50);
+  EXPECT_EQ (pcl::rspd::automaticNumberOfNeighbours (1000), 50);
+
+  // The default: ε = 0.1 % of the valid points; the paper's 50 from 100,000 on; a k set wins.
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  EXPECT_EQ (seg.getNumberOfNeighbours (), 0);
+  EXPECT_EQ (seg.getNumberOfNeighboursUsed (), 0);
+  seg.setInputCloud (boxCorner (10000)); // 30,000 points: ε = 30
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> i;
+  seg.segment (c, i);
+  EXPECT_EQ (seg.getNumberOfNeighboursUsed (), 15);
+  seg.setMinPatchSize (80);
+  seg.segment (c, i);
+  EXPECT_EQ (seg.getNumberOfNeighboursUsed (), 40);
+  seg.setNumberOfNeighbours (50);
+  seg.segment (c, i);
+  EXPECT_EQ (seg.getNumberOfNeighboursUsed (), 50);
 }
 
 TEST (RobustPlaneSegmentation, SegmentWithWrongParametersKeepsOldValues)
 {
   pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
-  seg.setNumberOfNeighbours (0);
-  EXPECT_EQ (seg.getNumberOfNeighbours (), 50);
+  seg.setNumberOfNeighbours (2);
+  EXPECT_EQ (seg.getNumberOfNeighbours (), 0);
+  seg.setNumberOfNeighbours (-1);
+  EXPECT_EQ (seg.getNumberOfNeighbours (), 0);
   seg.setMinPatchSizeRatio (-1.0);
   EXPECT_DOUBLE_EQ (seg.getMinPatchSizeRatio (), 0.001);
   seg.setMaxOutlierRatio (2.0);
@@ -316,6 +357,7 @@ TEST (RobustPlaneSegmentation, FinalAssignmentReachesTheEdges)
     pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
     seg.setInputCloud (cloud);
     seg.setNormalFit (pcl::rspd::NormalFit::Pca); // the bands of bent PCA normals are the point here (default)
+    seg.setNumberOfNeighbours (50); // the paper's k: at 9000 points the automatic 15 bends little
     seg.setFinalAssignment (mode);
     EXPECT_EQ (seg.getFinalAssignment (), mode);
     std::vector<pcl::ModelCoefficients> c;
@@ -466,6 +508,8 @@ TEST (RobustPlaneSegmentation, AdaptiveNormalScaleOnlyWhereTheNoiseSwampsTheNeig
   // changes nothing. σ = 1 cm with 20,000 per face and k = 10 (neighbourhood radius ~1.3 cm, the
   // regime of a million-sample unit cube with 1 % noise at k = 50): it widens most samples.
   pcl::RobustPlaneSegmentation<pcl::PointXYZ> fixed, adaptive;
+  fixed.setNumberOfNeighbours (50); // the paper's k, as the comment's radii assume
+  adaptive.setNumberOfNeighbours (50);
   EXPECT_EQ (adaptive.getNormalScale (), pcl::rspd::NormalScale::Automatic); // the default
   fixed.setNormalScale (pcl::rspd::NormalScale::Fixed);
   adaptive.setNormalScale (pcl::rspd::NormalScale::Adaptive);

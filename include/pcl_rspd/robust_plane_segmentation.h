@@ -59,13 +59,18 @@ struct RobustPlane
   *    MDP = median(D) + α·MAD(D) with the cell's in-plane extent through the angle of
   *    F = 0.5·max(w, l)·U + MDP·N with N (> 75°); T2 needs MND = median(Φ) + α·MAD(Φ) < 60°;
   *    T3 rejects a cell with 25 % or more outliers, and an accepted patch drops its outliers;
-  *  - grow (Sec. 3.3): breadth-first on the k-NN graph (k = 50), patches by increasing MND;
+  *  - grow (Sec. 3.3): breadth-first on the k-NN graph (k = 50; see automatic k below), patches by
+  *    increasing MND;
   *  - merge (Sec. 3.4): union-find over pairs that are adjacent (M1), have normals closer than the
   *    larger MND (M2) and where a boundary sample of one is an inlier of the other (M3);
   *  - iterate (Sec. 3.5): a patch that grew by more than 50 % is re-estimated and grow/merge repeat.
   *
   * Where the paper is silent or its letter fails on real data, these departures are made; each can
   * be switched back to the paper's behaviour:
+  *  - automatic k (setNumberOfNeighbours(50) for the paper): k = ε/2 between 15 and 50, the paper's
+  *    50 from 100,000 valid points on; below that a 50-neighbourhood is as large as the smallest plane
+  *    the split seeds, and no sample of such a plane has a clean normal
+  *    (pcl::rspd::automaticNumberOfNeighbours);
   *  - zero spread: the interval half-widths have floors that scale with the data (1e-6 of the
   *    patch's in-plane extent for distances, 1e-3 rad for normals), so a noise-free plane (MAD = 0,
   *    the paper's Table 5) passes and grows (setDistanceFloorRatio(0), setNormalDeviationFloor(0));
@@ -103,10 +108,11 @@ struct RobustPlane
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
   *    by the same rule and holds it within its noise band, else for none;
   *  - plane support (setSupportCheck(false) for the paper): last, a member on or beyond its plane's
-  *    rim whose in-plane gap to the rest of the plane is more than 6 times its neighbours' gaps (or
-  *    with under a tenth of its neighbours in the plane), and which lies in no other plane's noise
-  *    band, leaves the plane (outliers within the band just beyond a rim have the plane's PCA normal
-  *    and pass growth);
+  *    rim whose in-plane gap to the rest of the plane is more than 6 times its neighbours' gaps, or
+  *    which lies ahead of all its plane's neighbours by more than 2 of their gaps (or with under a
+  *    tenth of its neighbours in the plane), and which lies in no other plane's noise band, leaves
+  *    the plane, in rounds while releases expose more (outliers within the band just beyond a rim
+  *    have the plane's PCA normal and pass growth);
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals), and samples
   *    inside one plane join it if their normal passes its MND and they lie within 4 robust standard
@@ -190,12 +196,16 @@ public:
   getSearchMethod () const { return search_; }
 
   /** \brief k, the neighbours per sample of the graph and of normal estimation, not counting the
-    * sample itself (default 50, Sec. 3.3). */
+    * sample itself (>= 3; the paper's is 50, Sec. 3.3), or 0, the default: automatic, ε/2 between
+    * 15 and 50 (pcl::rspd::automaticNumberOfNeighbours), i.e. 50 from 100,000 valid points on. */
   void
   setNumberOfNeighbours (int k);
-  /** \brief k, neighbours per sample. */
+  /** \brief k as set: 0 for automatic. */
   int
   getNumberOfNeighbours () const { return k_; }
+  /** \brief k the last segmentation used (0 before any): the one set, or the automatic choice. */
+  int
+  getNumberOfNeighboursUsed () const { return k_used_; }
 
   /** \brief ε as a fraction of the number n of valid samples: ε = max(10, ceil(ratio·n))
     * (default 0.001, Sec. 3.1). */
@@ -343,8 +353,9 @@ public:
 
   /** \brief Plane support (default true; false = the paper): last of all, a member on or beyond its
     * plane's rim whose in-plane gap to the plane's nearest other sample is more than 6 times its
-    * neighbours' gaps (or with under a tenth of its neighbours in the plane), and which lies in no
-    * other plane's noise band, leaves the plane for none. See
+    * neighbours' gaps, or which lies ahead of all of them by more than 2 such gaps (or with under a
+    * tenth of its neighbours in the plane), and which lies in no other plane's noise band, leaves the
+    * plane for none; releases peel, up to 8 rounds. See
     * pcl::rspd::releaseUnsupportedMembers and pcl::rspd::DetectorParameters::support_check. */
   void
   setSupportCheck (bool enable);
@@ -549,7 +560,8 @@ protected:
 
   NormalsConstPtr normals_;
   SearchPtr search_;
-  int k_ = 50;
+  int k_ = 0;      ///< 0: automatic
+  int k_used_ = 0; ///< k of the last segmentation
   double min_patch_ratio_ = 0.001;
   std::size_t min_patch_size_ = 0;
   bool small_plane_seeding_ = true;

@@ -159,9 +159,9 @@ RobustPlaneSegmentation<PointT, NormalT>::setSearchMethod (const SearchPtr& sear
 template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setNumberOfNeighbours (int k)
 {
-  if (k < 3)
+  if (k < 3 && k != 0)
   {
-    PCL_ERROR ("[pcl::%s::setNumberOfNeighbours] k must be at least 3 (got %d); keeping %d\n",
+    PCL_ERROR ("[pcl::%s::setNumberOfNeighbours] k must be at least 3, or 0 for automatic (got %d); keeping %d\n",
                getClassName ().c_str (), k, k_);
     return;
   }
@@ -537,9 +537,13 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
     PCL_ERROR ("[pcl::%s::segment] no valid point: every point is non-finite\n", name);
     return false;
   }
-  if (n <= static_cast<std::size_t> (k_))
+  params_.min_patch_size = min_patch_size_ > 0
+      ? min_patch_size_
+      : std::max<std::size_t> (10, static_cast<std::size_t> (std::ceil (min_patch_ratio_ * static_cast<double> (n))));
+  k_used_ = k_ > 0 ? k_ : pcl::rspd::automaticNumberOfNeighbours (params_.min_patch_size);
+  if (n <= static_cast<std::size_t> (k_used_))
   {
-    PCL_ERROR ("[pcl::%s::segment] %zu valid points: need more than k = %d\n", name, n, k_);
+    PCL_ERROR ("[pcl::%s::segment] %zu valid points: need more than k = %d\n", name, n, k_used_);
     return false;
   }
 
@@ -576,10 +580,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
       points_.normals[s] = Eigen::Vector3d (nn.normal_x, nn.normal_y, nn.normal_z).normalized ().cast<float> ();
     }
   }
-  params_.min_patch_size = min_patch_size_ > 0
-      ? min_patch_size_
-      : std::max<std::size_t> (10, static_cast<std::size_t> (std::ceil (min_patch_ratio_ * static_cast<double> (n))));
-  params_.small_cell_size = small_plane_seeding_ ? static_cast<std::size_t> (k_ + 1) : 0;
+  params_.small_cell_size = small_plane_seeding_ ? static_cast<std::size_t> (k_used_ + 1) : 0;
   return true;
 }
 
@@ -611,7 +612,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     std::vector<std::uint32_t> to_internal (input_->size (), std::numeric_limits<std::uint32_t>::max ());
     for (std::size_t s = 0; s < n; ++s)
       to_internal[points_.input_indices[s]] = static_cast<std::uint32_t> (s);
-    graph_ = pcl::rspd::NeighborGraph (n, k_);
+    graph_ = pcl::rspd::NeighborGraph (n, k_used_);
     bool short_answer = false;
     const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
 #pragma omp parallel num_threads(pcl::rspd::resolveThreads (params_.num_threads))
@@ -620,11 +621,11 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
       pcl::Indices nn;
       std::vector<float> d2;
       std::vector<std::pair<float, std::uint32_t>> found;
-      std::vector<std::uint32_t> row (static_cast<std::size_t> (k_));
+      std::vector<std::uint32_t> row (static_cast<std::size_t> (k_used_));
 #pragma omp for schedule(dynamic, 256)
       for (std::ptrdiff_t s = 0; s < count; ++s)
       {
-        search_->nearestKSearch ((*input_)[points_.input_indices[s]], k_ + 1, nn, d2);
+        search_->nearestKSearch ((*input_)[points_.input_indices[s]], k_used_ + 1, nn, d2);
         found.clear ();
         for (std::size_t j = 0; j < nn.size () && j < d2.size (); ++j)
         {
@@ -640,29 +641,29 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
                                     return a.second == b.second;
                                   }),
                      found.end ());
-        if (found.size () < static_cast<std::size_t> (k_))
+        if (found.size () < static_cast<std::size_t> (k_used_))
         {
 #pragma omp atomic write
           short_answer = true;
           // Every row must be set before the graph is read: fill with what there is.
-          for (int j = 0; j < k_; ++j)
+          for (int j = 0; j < k_used_; ++j)
             row[j] = found.empty () ? static_cast<std::uint32_t> (s == 0 ? 1 : 0) : found[j % found.size ()].second;
         }
         else
-          for (int j = 0; j < k_; ++j)
+          for (int j = 0; j < k_used_; ++j)
             row[j] = found[j].second;
         appender.setRow (static_cast<std::size_t> (s), row.data ());
       }
     }
     if (short_answer)
     {
-      PCL_ERROR ("[pcl::%s::segment] the search method returned fewer than k = %d neighbours\n", name, k_);
+      PCL_ERROR ("[pcl::%s::segment] the search method returned fewer than k = %d neighbours\n", name, k_used_);
       return false;
     }
   }
-  else if (!pcl::rspd::buildKnnGraph (points_.points, k_, params_.num_threads, graph_))
+  else if (!pcl::rspd::buildKnnGraph (points_.points, k_used_, params_.num_threads, graph_))
   {
-    PCL_ERROR ("[pcl::%s::segment] could not build the %d-nearest-neighbour graph\n", name, k_);
+    PCL_ERROR ("[pcl::%s::segment] could not build the %d-nearest-neighbour graph\n", name, k_used_);
     return false;
   }
   const auto t1 = std::chrono::steady_clock::now ();
@@ -676,13 +677,13 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
     PCL_DEBUG ("[pcl::%s::segment] no normals given: PCA at an adaptive scale; %zu of %zu samples unresolved "
                "at k = %d, %zu from a wider scale, %zu unresolved at every scale\n", name,
-               normal_scale_stats_.unresolved_at_k, n, k_, normal_scale_stats_.widened (),
+               normal_scale_stats_.unresolved_at_k, n, k_used_, normal_scale_stats_.widened (),
                normal_scale_stats_.unresolved);
   }
   else if (!normals_)
   {
     PCL_DEBUG ("[pcl::%s::segment] no normals given: estimating them by PCA over the %d-neighbourhoods\n",
-               name, k_);
+               name, k_used_);
     pcl::rspd::estimateNormals (points_.points, graph_, params_.num_threads, points_.normals);
     stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
   }
