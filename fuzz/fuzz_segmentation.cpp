@@ -458,9 +458,10 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   }
   // With a search method, coordinates beyond half the float range are refused: FLANN cannot split
   // them (fuzz/regressions/README.md).
-  // k = 0: the automatic k of the resolved ε (0.1 % of the valid samples, at least 10, or set).
+  // k = 0: the automatic k of the resolved ε (0.1 % of the valid samples, at least 10, or set), or
+  // the paper's 50 with given normals.
   const std::size_t epsilon = (flags & 8) ? std::size_t (3 + b8 % 40) : std::max<std::size_t> (10, (n_valid + 999) / 1000);
-  const int k_used = k > 0 ? k : pcl::rspd::automaticNumberOfNeighbours (epsilon);
+  const int k_used = k > 0 ? k : (with_normals ? pcl::rspd::kPaperNeighbours : pcl::rspd::automaticNumberOfNeighbours (epsilon));
   bool expected_ok = n > 0 && indices_in_range && !normals_mismatch && n_valid > static_cast<std::size_t> (k_used) &&
                      !(with_search && beyond_half_range);
   // FLANN (the KdTree search method) cannot rank neighbours whose squared distances overflow a

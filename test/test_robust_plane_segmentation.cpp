@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 
@@ -191,6 +192,22 @@ TEST (RobustPlaneSegmentation, AutomaticNumberOfNeighboursIsHalfEpsilonBetween15
   seg.setNumberOfNeighbours (50);
   seg.segment (c, i);
   EXPECT_EQ (seg.getNumberOfNeighboursUsed (), 50);
+
+  // With the caller's normals, whose scale is theirs, automatic means the paper's 50.
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> given;
+  const auto cloud = boxCorner (10000);
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  for (const auto& p : *cloud)
+  {
+    // The box corner's faces are x = 0, y = 0 and z = 0.
+    const float ax = std::abs (p.x), ay = std::abs (p.y), az = std::abs (p.z);
+    normals->push_back (ax <= ay && ax <= az ? pcl::Normal (1, 0, 0) : (ay <= az ? pcl::Normal (0, 1, 0) : pcl::Normal (0, 0, 1)));
+  }
+  given.setInputCloud (cloud);
+  given.setInputNormals (normals);
+  given.segment (c, i);
+  EXPECT_EQ (given.getNumberOfNeighboursUsed (), 50);
+  EXPECT_EQ (i.size (), 3u);
 }
 
 TEST (RobustPlaneSegmentation, SegmentWithWrongParametersKeepsOldValues)

@@ -35,7 +35,8 @@ constexpr int kPaperNeighbours = 50;
   * the 20,000-point staircase (README, "Automatic k"). */
 constexpr int kMinAutomaticNeighbours = 15;
 
-/** \brief k when the caller sets none (departure): ε/2 between kMinAutomaticNeighbours and the
+/** \brief k when the caller sets none and gives no normals (departure; with the caller's normals,
+  * kPaperNeighbours): ε/2 between kMinAutomaticNeighbours and the
   * paper's 50. A k-neighbourhood as large as the smallest plane the split seeds (ε samples) has no
   * clean normal anywhere on such a plane — every sample's neighbourhood reaches past its rim — and
   * its graph edges cross to the planes around it; half of it leaves the middle of such a plane

@@ -67,10 +67,10 @@ struct RobustPlane
   *
   * Where the paper is silent or its letter fails on real data, these departures are made; each can
   * be switched back to the paper's behaviour:
-  *  - automatic k (setNumberOfNeighbours(50) for the paper): k = ε/2 between 15 and 50, the paper's
-  *    50 from 100,000 valid points on; below that a 50-neighbourhood is as large as the smallest plane
-  *    the split seeds, and no sample of such a plane has a clean normal
-  *    (pcl::rspd::automaticNumberOfNeighbours);
+  *  - automatic k (setNumberOfNeighbours(50) for the paper): with normals estimated here, k = ε/2
+  *    between 15 and 50, the paper's 50 from 100,000 valid points on; below that a 50-neighbourhood is
+  *    as large as the smallest plane the split seeds, and no sample of such a plane has a clean normal
+  *    (pcl::rspd::automaticNumberOfNeighbours); with given normals, 50;
   *  - zero spread: the interval half-widths have floors that scale with the data (1e-6 of the
   *    patch's in-plane extent for distances, 1e-3 rad for normals), so a noise-free plane (MAD = 0,
   *    the paper's Table 5) passes and grows (setDistanceFloorRatio(0), setNormalDeviationFloor(0));
@@ -197,7 +197,9 @@ public:
 
   /** \brief k, the neighbours per sample of the graph and of normal estimation, not counting the
     * sample itself (>= 3; the paper's is 50, Sec. 3.3), or 0, the default: automatic, ε/2 between
-    * 15 and 50 (pcl::rspd::automaticNumberOfNeighbours), i.e. 50 from 100,000 valid points on. */
+    * 15 and 50 (pcl::rspd::automaticNumberOfNeighbours), i.e. 50 from 100,000 valid points on, when
+    * the normals are estimated here; 50 with normals from setInputNormals, whose scale is the
+    * caller's. */
   void
   setNumberOfNeighbours (int k);
   /** \brief k as set: 0 for automatic. */
