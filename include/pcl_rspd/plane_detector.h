@@ -78,9 +78,11 @@ struct DetectorParameters
     * direction before the component-wise median of Eq. 4. false = the paper's plain median. */
   bool align_normals = true;
   /** \brief Departure (small planes): once grow-merge is stable, split the samples no patch holds
-    * again with cells down to this many samples (0 = off, the paper), keep the new seeds whose MND
-    * is no larger than the largest MND of the planes already found, grow-merge again, and drop every
-    * plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a neighbour. */
+    * again with cells down to this many samples (0 = off, the paper; RobustPlaneSegmentation uses
+    * k + 1, at most ε/2 and at least 10; the pass runs only if this is below ε), keep the new seeds
+    * whose MND is no larger than the median MND of the planes already found, grow-merge again, and
+    * drop every plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a
+    * neighbour. */
   std::size_t small_cell_size = 0;
   /** \brief Departure (small planes at a rim), used by the small-cell pass only: a cell that passes
     * T1 and T2 but fails T3 is tested again on its own inliers, and seeds a plane if they pass. The
