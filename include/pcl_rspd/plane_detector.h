@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -36,8 +37,7 @@ constexpr int kPaperNeighbours = 50;
 constexpr int kMinAutomaticNeighbours = 15;
 
 /** \brief k when the caller sets none and gives no normals (departure; with the caller's normals,
-  * kPaperNeighbours): ε/2 between kMinAutomaticNeighbours and the
-  * paper's 50. A k-neighbourhood as large as the smallest plane the split seeds (ε samples) has no
+  * kPaperNeighbours): ε/2 between kMinAutomaticNeighbours and the paper's 50. A k-neighbourhood as large as the smallest plane the split seeds (ε samples) has no
   * clean normal anywhere on such a plane — every sample's neighbourhood reaches past its rim — and
   * its graph edges cross to the planes around it; half of it leaves the middle of such a plane
   * clean. From 100,000 samples on (ε ≥ 100, the default ratio) this is the paper's 50. A count, not a
@@ -46,10 +46,7 @@ constexpr int kMinAutomaticNeighbours = 15;
 inline int
 automaticNumberOfNeighbours (std::size_t epsilon)
 {
-  const std::size_t half = epsilon / 2;
-  if (half <= static_cast<std::size_t> (kMinAutomaticNeighbours))
-    return kMinAutomaticNeighbours;
-  return half >= static_cast<std::size_t> (kPaperNeighbours) ? kPaperNeighbours : static_cast<int> (half);
+  return static_cast<int> (std::clamp<std::size_t> (epsilon / 2, kMinAutomaticNeighbours, kPaperNeighbours));
 }
 
 /** \brief Every constant of the method, with the paper's values as defaults. Angles in radians. */

@@ -59,12 +59,12 @@ constexpr double kOneSidedResultant = 0.5;
   * the nearest graph neighbour in l (0 for one that coincides with it) exceeds kSupportGapRatio
   * times the median of those neighbours' own gaps, or it lies ahead of all of them by more than
   * kSupportDepthRatio times that median (an outlier a few spacings beyond a straight rim), or fewer
-  * than kMinSupportShare of its neighbours are in l (a pair of outliers is each other's support); (2) it is one-sided (kOneSidedResultant),
-  * so a hole amid a plane keeps its samples; and (3) it lies within the noise band of no other plane
-  * that a graph neighbour holds: where two planes meet, the edge-side rule has settled the owner, and
-  * a sample of a sparse plane beside a dense one has few neighbours in its own. The gaps are ratios
-  * of lengths in the sample's neighbourhood, so the rule does not depend on scale or density. The
-  * rule peels: up to kSupportRounds rounds, each judging again the members next to the last round's
+  * than kMinSupportShare of its neighbours are in l (a pair of outliers is each other's support);
+  * (2) it is one-sided (kOneSidedResultant), so a hole amid a plane keeps its samples; and (3) it
+  * lies within the noise band of no other plane that a graph neighbour holds: where two planes
+  * meet, the edge-side rule has settled the owner, and a sample of a sparse plane beside a dense one
+  * has few neighbours in its own. The gaps are ratios of lengths in the sample's neighbourhood, so
+  * the rule does not depend on scale or density. The rule peels: up to kSupportRounds rounds, each judging again the members next to the last round's
   * releases. Each round's passes read the labels before it: the result does not depend on the
   * thread count.
   * \param[in] points samples

@@ -84,9 +84,10 @@ struct RobustPlane
   *  - small planes (setSmallPlaneSeeding(false) for the paper): a plane whose ε-sample octree cells
   *    always mix with a neighbour (a stair riser between two treads) is never seeded by Algorithm 1.
   *    Once grow-merge is stable, the samples no plane holds are split again with cells down to k + 1
-  *    samples (at most ε/2, at least 10); a new seed is kept only if its MND is at most the median MND of the planes found (the
-  *    scene's own noise level; edge bands of bent normals are noisier and would bridge faces through
-  *    M2), grow-merge runs again, and planes still smaller than ε are dropped;
+  *    samples (at most ε/2, at least 10); a new seed is kept only if its MND is at most the median
+  *    MND of the planes found (the scene's own noise level; edge bands of bent normals are noisier
+  *    and would bridge faces through M2), grow-merge runs again, and planes still smaller than ε are
+  *    dropped;
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth;
   *  - coplanar groups, M4 (setCoplanarMerge(false) for the paper): groups join largest first and
