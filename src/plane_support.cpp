@@ -15,6 +15,83 @@ namespace pcl
 {
 namespace rspd
 {
+namespace
+{
+/** Per plane, how much wider its members' gaps spread than uniform samples' would: the ratio of
+  * their kGapSpreadQuantile quantile to their median, over that ratio for samples spread uniformly
+  * (P(gap > x) = 2^(-(x / median)²)), at least 1. Samples in rows or stripes (a scan's lines, an
+  * RGB-D camera's depth steps on a slanted plane) have a small median gap along the row and a
+  * quantile across the rows: office1's planes spread 1 to 6.7 times. */
+std::vector<double>
+gapSpreads (const std::vector<std::uint32_t>& labels, const std::vector<float>& gap, std::size_t num_planes)
+{
+  std::vector<std::vector<float>> gaps (num_planes);
+  for (std::size_t i = 0; i < labels.size (); ++i)
+    if (labels[i] != kNoPatch && std::isfinite (gap[i]))
+      gaps[labels[i]].push_back (gap[i]);
+  const double uniform = std::sqrt (std::log (1.0 - kGapSpreadQuantile) / std::log (0.5));
+  std::vector<double> spread (num_planes, 1.0);
+  for (std::size_t l = 0; l < num_planes; ++l)
+  {
+    std::vector<float>& g = gaps[l];
+    if (g.empty ())
+      continue;
+    const double median = medianInPlace (g);
+    const auto at = static_cast<std::ptrdiff_t> (kGapSpreadQuantile * static_cast<double> (g.size () - 1));
+    std::nth_element (g.begin (), g.begin () + at, g.end ());
+    if (median > 0.0)
+      spread[l] = std::max (1.0, static_cast<double> (g[at]) / median / uniform);
+  }
+  return spread;
+}
+
+/** Whether member \a i of its plane (\a normal) is in a detached group: the members reached from
+  * it, hop by hop, each within kSupportGapRatio · \a spread times the median gap of its own plane
+  * neighbours, number fewer than kDetachedGroupSize and are all candidates. \a fresh members (this
+  * round's releases) are left out. */
+bool
+inDetachedGroup (const PointSet& points, const NeighborGraph& graph, const Eigen::Vector3d& normal, double spread,
+                 const std::vector<std::uint32_t>& labels, const std::vector<float>& gap,
+                 const std::vector<std::uint8_t>& candidate, const std::vector<std::uint8_t>& fresh, std::uint32_t i)
+{
+  const std::uint32_t l = labels[i];
+  const auto inPlane = [&] (std::uint32_t m) { return labels[m] == l && !fresh[m]; };
+  std::vector<std::uint32_t> group {i};
+  std::vector<float> gaps;
+  for (std::size_t at = 0; at < group.size (); ++at)
+  {
+    const std::uint32_t u = group[at];
+    if (!candidate[u])
+      return false; // reaches the plane's body
+    gaps.clear ();
+    graph.forEachNeighbor (u, [&] (std::uint32_t m) {
+      if (inPlane (m) && std::isfinite (gap[m]))
+        gaps.push_back (gap[m]);
+    });
+    if (gaps.empty ())
+      continue;
+    const double reach = kSupportGapRatio * spread * medianInPlace (gaps);
+    if (!(reach > 0.0))
+      return false; // coincident samples: no scale to judge by (as in pass 2)
+    const Eigen::Vector3d p = points.points[u].cast<double> ();
+    bool large = false;
+    graph.forEachNeighbor (u, [&] (std::uint32_t m) {
+      if (large || !inPlane (m) || std::find (group.begin (), group.end (), m) != group.end ())
+        return;
+      const Eigen::Vector3d q = points.points[m].cast<double> () - p;
+      if ((q - q.dot (normal) * normal).norm () <= reach)
+      {
+        group.push_back (m);
+        large = group.size () >= kDetachedGroupSize;
+      }
+    });
+    if (large)
+      return false;
+  }
+  return true;
+}
+} // namespace
+
 std::size_t
 releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
                            int num_threads, std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
@@ -34,6 +111,8 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
   std::vector<std::uint8_t> affected (labels.size (), 1); // its verdict may have changed
   std::vector<std::uint8_t> release (labels.size (), 0);  // released in an earlier round
   std::vector<std::uint8_t> fresh (labels.size (), 0);    // released in this round
+  std::vector<std::uint8_t> grouped (labels.size (), 0);  // in a small detached group
+  std::vector<double> spread; // per plane, gapSpreads of the first round
 
   for (int round = 0; round < kSupportRounds; ++round)
   {
@@ -121,6 +200,25 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
       fresh[i] = typical > 0.0 && (static_cast<double> (gap[i]) > kSupportGapRatio * typical ||
                                    static_cast<double> (depth[i]) > kSupportDepthRatio * typical);
     }
+
+    if (round == 0)
+      spread = gapSpreads (labels, gap, patches.size ());
+
+    // Pass 3: a candidate in a detached group (kDetachedGroupSize) is released. The walk reads the
+    // labels and figures before this round's releases and writes only its own sample's verdict.
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii)
+    {
+      const std::uint32_t i = static_cast<std::uint32_t> (ii);
+      if (labels[i] != kNoPatch && !fresh[i] && candidate[i] && affected[i])
+        grouped[i] = inDetachedGroup (points, graph, patches[labels[i]].normal, spread[labels[i]], labels, gap, candidate, fresh, i);
+    }
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+      if (grouped[i])
+      {
+        fresh[i] = 1;
+        grouped[i] = 0;
+      }
 
     std::size_t now = 0;
     for (std::ptrdiff_t i = 0; i < n; ++i)

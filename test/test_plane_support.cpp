@@ -92,6 +92,23 @@ TEST (PlaneSupport, ReleasesPeelOutliersThatShieldEachOther)
   EXPECT_EQ (run (inner), 1u);
 }
 
+TEST (PlaneSupport, ASmallDetachedGroupBeyondTheRimIsReleased)
+{
+  // A pair 8 spacings beyond the rim, side by side along it, one spacing apart: each is the other's
+  // nearest (a typical gap) and neither is ahead of the other; 11 of 12 neighbours are in the plane.
+  // Nothing within 6 median gaps joins them to the plane: a detached group of 2, released.
+  Scene s = gridWith ({{1.4f, 0.5f, 0.0f}, {1.4f, 0.55f, 0.0f}});
+  EXPECT_EQ (run (s), 2u);
+  EXPECT_EQ (s.patches[0].members.size (), 400u);
+
+  // Five in a row, within reach of one another: as large as a group may be and be kept.
+  std::vector<Eigen::Vector3f> row;
+  for (int i = 0; i < static_cast<int> (kDetachedGroupSize); ++i)
+    row.emplace_back (1.4f, 0.4f + 0.05f * static_cast<float> (i), 0.0f);
+  Scene five = gridWith (row);
+  EXPECT_EQ (run (five), 0u);
+}
+
 TEST (PlaneSupport, TheGridItselfLosesNothing)
 {
   // Rim and corner samples of a regular grid are one spacing from the next: nothing to release.

@@ -256,15 +256,15 @@ TEST (Scenario, FacadeOutliersBeyondTheRimsNeedThePlaneSupport)
   // 15 % outliers: those in the wall's noise band beyond its edges and inside the window openings,
   // and in a window's band behind the wall, have the plane's PCA normal and lie within its band;
   // growth and the last assignment take them, each a voxel of false plane. Measured: F1 0.986 ->
-  // 0.998, precision 0.973 -> 0.997 (0.989 with the gap rule alone, without depth and peeling),
-  // recall unchanged.
+  // 0.9988, precision 0.973 -> 0.9980 (0.989 with the gap rule alone, 0.9968 without the detached
+  // groups), recall unchanged.
   const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setSupportCheck (false); };
   const Detection without = detectScene ("facade", {}, true, pcl::rspd::NormalScale::Automatic, off);
   const Detection with = detectScene ("facade");
   EXPECT_LT (without.score.precision, 0.980);
-  EXPECT_GE (with.score.precision, 0.996);
+  EXPECT_GE (with.score.precision, 0.9975);
   EXPECT_GE (with.score.recall, without.score.recall - 0.0005);
-  EXPECT_GE (with.score.f1, 0.9975);
+  EXPECT_GE (with.score.f1, 0.998);
   EXPECT_EQ (with.score.found, 16);
 }
 

@@ -38,6 +38,20 @@ constexpr double kSupportDepthRatio = 2.0;
   * are judged again. The bound keeps the cost linear whatever the cloud. */
 constexpr int kSupportRounds = 8;
 
+/** \brief A one-sided member whose plane neighbours within reach (kSupportGapRatio times their
+  * median gap, times the plane's gap spread), and theirs, hop by hop, number fewer than this, all
+  * one-sided, is in a detached group: outliers beyond the rim that support one another's gaps and
+  * depths (the facade: pairs 7 to 20 spacings beyond its wall and its windows). The detector's
+  * smallest seed cell holds 10 samples, so no plane is this small; a sliver of a plane cut off by
+  * an occluder loses at most this many samples. */
+constexpr std::size_t kDetachedGroupSize = 5;
+
+/** \brief Quantile of a plane's member gaps that measures their spread against the median: 0.9,
+  * where uniform samples' gaps are 1.82 times the median and rows of samples' gaps are the row
+  * spacing, so that the reach of a detached group spans the rows of a scan (see
+  * kDetachedGroupSize). */
+constexpr double kGapSpreadQuantile = 0.9;
+
 /** \brief A member with fewer than this share of its graph neighbours in its own plane cannot be
   * vouched for by their gaps: a few outliers near one another support one another's gaps. A plane's
   * own sample has half its neighbourhood in the plane on a straight rim and a quarter in a corner. */
@@ -59,7 +73,8 @@ constexpr double kOneSidedResultant = 0.5;
   * the nearest graph neighbour in l (0 for one that coincides with it) exceeds kSupportGapRatio
   * times the median of those neighbours' own gaps, or it lies ahead of all of them by more than
   * kSupportDepthRatio times that median (an outlier a few spacings beyond a straight rim), or fewer
-  * than kMinSupportShare of its neighbours are in l (a pair of outliers is each other's support);
+  * than kMinSupportShare of its neighbours are in l (a pair of outliers is each other's support),
+  * or it belongs to a detached group of fewer than kDetachedGroupSize one-sided members;
   * (2) it is one-sided (kOneSidedResultant), so a hole amid a plane keeps its samples; and (3) it
   * lies within the noise band of no other plane that a graph neighbour holds: where two planes
   * meet, the edge-side rule has settled the owner, and a sample of a sparse plane beside a dense one
