@@ -109,6 +109,32 @@ TEST (PlaneSupport, ASmallDetachedGroupBeyondTheRimIsReleased)
   EXPECT_EQ (run (five), 0u);
 }
 
+TEST (PlaneSupport, AGroupAsFarAsThePlanesOwnStripesAreApartIsKept)
+{
+  // A plane sampled in dense rows 0.08 apart (spacing 0.01 along them) with single samples between
+  // the rows, 15 % of the plane (an RGB-D camera's depth steps on a slanted plane): the median gap
+  // is 0.01, the 90th percentile 0.04. A fragment of 3 samples 0.09 beyond the last row is as far
+  // from it as the rows are from one another: the reach, widened by the plane's gap spread (2.2),
+  // joins it to the plane; with the median gap alone (reach 0.06) it would be a detached group.
+  Scene s;
+  const auto add = [&] (float x, float y) {
+    s.set.points.emplace_back (x, y, 0.0f);
+    s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+    s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+  };
+  for (int j = 0; j <= 10; ++j)
+    for (int i = 0; i <= 100; ++i)
+      add (0.01f * static_cast<float> (i), 0.08f * static_cast<float> (j));
+  for (int j = 0; j < 10; ++j)
+    for (int i = 0; i < 20; ++i)
+      add (0.025f + 0.05f * static_cast<float> (i), 0.04f + 0.08f * static_cast<float> (j));
+  for (int i = 0; i < 3; ++i)
+    add (0.5f + 0.01f * static_cast<float> (i), 0.89f);
+  s.patches = rspd_test::onePatchOfAll (s.set.size (), 0.01, 0.1);
+  s.labels = labelSamples (s.set.size (), s.patches);
+  EXPECT_EQ (run (s), 0u);
+}
+
 TEST (PlaneSupport, TheGridItselfLosesNothing)
 {
   // Rim and corner samples of a regular grid are one spacing from the next: nothing to release.
