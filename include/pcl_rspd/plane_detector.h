@@ -106,7 +106,9 @@ struct DetectorParameters
     * their graph neighbours once grow-merge is stable, by distance alone (|d| <= MDP, nearest
     * relative to MDP; the sample must be among its neighbour's k nearest too); with Tails also a
     * sample most of whose neighbours hold one plane, if its normal passes that plane's MND and
-    * |d| <= 4 σ of the plane (σ = 1.4826 median |d| of its members). */
+    * |d| <= 4 σ of the plane (σ = 1.4826 median |d| of its members). Except in that inside-a-plane
+    * case, a plane reaches no farther than 3 neighbourhood radii from the members growth left, along
+    * the graph path that brings it (each assigned sample carries it on to the next round). */
   FinalAssignment final_assignment = FinalAssignment::Tails;
   /** \brief Departure (far members): once grow-merge and the small-plane pass are stable, members
     * farther from their plane's last estimate than max(MDP, 3 σ) (σ = 1.4826 median |d| of its

@@ -117,7 +117,8 @@ struct RobustPlane
   *  - last assignment (setFinalAssignment(None) for the paper): samples growth left out next to two
   *    or more planes join the one whose MDP band holds them (edge bands of bent normals), and samples
   *    inside one plane join it if their normal passes its MND and they lie within 4 robust standard
-  *    deviations of it (the noise tail MDP cuts off);
+  *    deviations of it (the noise tail MDP cuts off); the first kind reaches no farther than 3
+  *    neighbourhood radii from the plane's grown members;
   *  - robust normals are available, off by default for their cost (setNormalFit(TrimmedPlane)): the
   *    reweighted least-trimmed-squares plane of the same k-neighbourhood (pcl::rspd::refineNormalsTrimmed),
   *    so normals near an edge belong to one face instead of bending between two;
