@@ -107,6 +107,28 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
   return updated;
 }
 
+/** Small-plane pass: whether more than half the members of \a seed lie within the noise band
+  * (\a band) of a plane one of their graph neighbours holds. Such a seed is a layer of a plane
+  * already found, not a new one: the samples between a door 2 cm proud of its wall and the wall,
+  * or a second copy of a small plane's own noise rim. */
+bool
+isBandLayer (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
+             const std::vector<double>& band, const std::vector<std::uint32_t>& labels, const PlanarPatch& seed)
+{
+  std::size_t inside = 0;
+  for (const auto i : seed.members)
+  {
+    const Eigen::Vector3d p = points.points[i].cast<double> ();
+    bool in = false;
+    graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+      const std::uint32_t o = labels[m];
+      in = in || (o != kNoPatch && std::abs ((p - patches[o].center).dot (patches[o].normal)) <= band[o]);
+    });
+    inside += in;
+  }
+  return 2 * inside > seed.members.size ();
+}
+
 /** One round of a pass that offers unlabelled samples to planes: sample open[j] joins plane
   * choice[j] (kNoPatch: stays open); the samples left open and their choices are compacted to the
   * front. \return samples that joined a plane */
@@ -570,7 +592,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     std::vector<double> mnds;
     for (const auto& p : patches)
       mnds.push_back (p.mnd);
-    const double max_mnd = medianInPlace (mnds);
+    const double max_mnd = *std::max_element (mnds.begin (), mnds.end ());
+    std::vector<double> band = noiseBands (points, params, patches);
     std::vector<std::uint32_t> left;
     for (std::uint32_t i = 0; i < labels.size (); ++i)
       if (labels[i] == kNoPatch)
@@ -582,9 +605,12 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     {
       if (seed.mnd > max_mnd)
         continue; // noisier than every plane found: an edge band of bent normals, not a plane
+      if (isBandLayer (points, graph, patches, band, labels, seed))
+        continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate
       for (const auto i : seed.members)
         labels[i] = static_cast<std::uint32_t> (patches.size ());
       patches.push_back (std::move (seed));
+      band.push_back (patches.back ().mdp); // its members' spread is not known yet: MDP
       ++st.small_seeds;
     }
     if (st.small_seeds > 0)

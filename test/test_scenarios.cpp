@@ -282,22 +282,45 @@ TEST (Scenario, FacadeWithThirtyPercentOutliersKeepsItsWindows)
   EXPECT_GE (d.score.f1, 0.99);
 }
 
+TEST (Scenario, SmallPassSeedsUpToTheNoisiestPlaneButNoLayerOfOne)
+{
+  // The staircase's seed 4: no cell of the split seeds one riser, and the small-plane pass's seeds
+  // on it (MND 0.056-0.106 rad: its normals bend towards both edges) were all above the median
+  // plane's MND (0.055): 29 of 30 planes, F1 0.979; with the noisiest plane's MND as the bound, 30
+  // and 0.993. The wider bound alone gave the room's seed 3 a false plane, the strip between its
+  // door and the wall 2 cm behind it (F1 0.9926): a seed most of whose samples lie in a found
+  // plane's noise band is not kept (0.9972, no false plane).
+  pcl::rspd::SceneOptions o;
+  o.seed = 4;
+  const Detection stairs = detectScene ("staircase", o);
+  EXPECT_EQ (stairs.score.found, 30);
+  EXPECT_GE (stairs.score.f1, 0.99);
+  o.seed = 3;
+  const Detection room = detectScene ("room", o);
+  EXPECT_EQ (room.score.found, 12);
+  EXPECT_EQ (room.score.false_planes, 0);
+  EXPECT_GE (room.score.f1, 0.995);
+}
+
 TEST (Scenario, SparseStaircaseAndYardNeedTheAutomaticK)
 {
-  // 30,000 samples: ε = 30, and a 0.18 m riser holds ~750. With the paper's k = 50 a sample's
-  // neighbourhood reaches 4-5 cm, so a riser's normals bend over most of its height and few cells
-  // seed it (17 of 30 planes, F1 0.689, measured, before the small-plane pass's cells were capped at
-  // ε/2; 27 and 0.936 with the cap); the automatic k (15 here) finds them all (0.990). The
-  // industrial yard's walls and platform sides likewise: 4 of 6 with k = 50, 6 with the automatic k.
+  // 20,000 samples: ε = 20, and a 0.18 m riser holds ~500. With the paper's k = 50 a sample's
+  // neighbourhood reaches 5-6 cm, so a riser's normals bend over most of its height: F1 0.940
+  // (0.864 and 26 of 30 planes before the small-plane pass took seeds up to the noisiest plane's
+  // MND); the automatic k (15 here) gives 0.992. The industrial yard's walls and platform sides at
+  // 30,000 samples: 4 of 6 with k = 50, 6 with the automatic k (measured).
   pcl::rspd::SceneOptions o;
   o.num_points = 30000;
+  pcl::rspd::SceneOptions o20 = o;
+  o20.num_points = 20000;
   const auto paper_k = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setNumberOfNeighbours (50); };
-  const Detection fixed = detectScene ("staircase", o, true, pcl::rspd::NormalScale::Automatic, paper_k);
-  const Detection automatic = detectScene ("staircase", o);
-  EXPECT_LE (fixed.score.found, 28);
-  EXPECT_LT (fixed.score.f1, 0.95);
+  const Detection fixed = detectScene ("staircase", o20, true, pcl::rspd::NormalScale::Automatic, paper_k);
+  const Detection automatic = detectScene ("staircase", o20);
+  EXPECT_LT (fixed.score.f1, 0.96);
   EXPECT_EQ (automatic.score.found, 30);
   EXPECT_GE (automatic.score.f1, 0.985);
+  const Detection yard_fixed = detectScene ("industrial", o, true, pcl::rspd::NormalScale::Automatic, paper_k);
+  EXPECT_LE (yard_fixed.score.found, 5);
   // With the caller's normals (PCL's k = 50, as rspd_compare shares them) k stays the paper's 50;
   // the small-plane pass, its cells capped at ε/2, still seeds the risers (17 of 30 without the cap).
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
@@ -366,7 +389,9 @@ TEST (Scenario, TurnedSceneGivesTheSamePlanes)
   // In the dominant-plane frame (the default) the octree's cells and the medians of Eqs. 3-4 turn
   // with the cloud, so three random rotations of the room and of the staircase label their points
   // as the original does: scored against the original's truth and positions, F1 within 0.005.
-  // In the cloud's own axes (the paper), a rotated facade loses planes for some rotations.
+  // In the cloud's own axes (the paper), a rotated facade scores lower for some rotations (0.989
+  // against 0.994 here; it also lost planes before the small-plane pass took seeds up to the
+  // noisiest plane's MND).
   for (const char* name : {"room", "staircase"})
   {
     const pcl::rspd::Scene scene = pcl::rspd::makeScene (name);
@@ -397,7 +422,7 @@ TEST (Scenario, TurnedSceneGivesTheSamePlanes)
   const Detection planes = detect (turned, facade.labels);
   const Detection input_axes = detect (turned, facade.labels, nullptr, true, pcl::rspd::NormalScale::Automatic, axes);
   EXPECT_EQ (planes.score.found, 16);
-  EXPECT_LT (input_axes.score.found, 16);
+  EXPECT_LT (input_axes.score.f1, planes.score.f1 - 0.002);
 }
 
 TEST (Scenario, ScaledAndShiftedSceneGivesTheSameScore)

@@ -77,8 +77,9 @@ struct DetectorParameters
   /** \brief Departure (small planes): once grow-merge is stable, split the samples no patch holds
     * again with cells down to this many samples (0 = off, the paper; RobustPlaneSegmentation uses
     * k + 1, at most ε/2 and at least 10; the pass runs only if this is below ε), keep the new seeds
-    * whose MND is no larger than the median MND of the planes already found, grow-merge again, and
-    * drop every plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a
+    * whose MND is no larger than the largest MND of the planes already found and fewer than half of
+    * whose samples lie within the noise band of a plane a graph neighbour holds (a layer of that
+    * plane), grow-merge again, and drop every plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a
     * neighbour. */
   std::size_t small_cell_size = 0;
   /** \brief Departure (small planes at a rim), used by the small-cell pass only: a cell that passes

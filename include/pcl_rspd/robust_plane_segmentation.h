@@ -287,8 +287,9 @@ public:
 
   /** \brief Small-plane pass (default on): after the paper's split-grow-merge, split the unassigned
     * samples again with cells down to k + 1 samples (the normal-estimation neighbourhood), keep seeds
-    * whose MND is at most the median MND of the planes found, grow-merge, and drop planes smaller
-    * than ε. false = the paper's single split. */
+    * whose MND is at most the largest MND of the planes found and that are not a layer of a found
+    * plane's noise band, grow-merge, and drop planes smaller than ε. false = the paper's single
+    * split. */
   void
   setSmallPlaneSeeding (bool enable);
   /** \brief Whether the small-plane pass runs. */
