@@ -191,6 +191,8 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   for (const auto i : left)
     reach[i] = std::numeric_limits<float>::infinity ();
   std::vector<float> chosen_reach (left.size ());
+  // Per sample, its k-neighbourhood's radius, measured once when first needed (rounds revisit it).
+  std::vector<float> radius (labels.size (), -1.0f);
   std::size_t assigned = 0;
   for (;;)
   {
@@ -222,16 +224,18 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
       }
       const Eigen::Vector3d p = points.points[i].cast<double> ();
       double best = HUGE_VAL;
-      double radius = 0.0; // of the sample's k-neighbourhood
-      graph.forEachNeighbor (i, [&] (std::uint32_t n) {
-        radius = std::max (radius, (points.points[n].cast<double> () - p).norm ());
-      });
+      if (!beside_one && radius[i] < 0.0f)
+      {
+        double r = 0.0;
+        graph.forEachNeighbor (i, [&] (std::uint32_t n) { r = std::max (r, (points.points[n].cast<double> () - p).norm ()); });
+        radius[i] = static_cast<float> (r);
+      }
       graph.forEachNeighbor (i, [&] (std::uint32_t n) {
         const std::uint32_t l = labels[n];
         if (l == kNoPatch || l == choice[j])
           return;
         const double path = reach[n] + (points.points[n].cast<double> () - p).norm ();
-        if (!beside_one && path > kAssignReachRadii * radius)
+        if (!beside_one && path > kAssignReachRadii * static_cast<double> (radius[i]))
           return;
         const PlanarPatch& patch = patches[l];
         const double d = std::abs ((p - patch.center).dot (patch.normal));
