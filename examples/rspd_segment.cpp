@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -53,6 +53,9 @@ const char* const kHelp =
     "                   default); ignored when the input has normals\n"
     "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
+    "  --left-normals trimmed|pca  the small-plane pass splits the points it left a second\n"
+    "                   time, on the normals of their neighbourhoods' trimmed planes ('trimmed',\n"
+    "                   for normals estimated here by PCA); 'pca' does not (the default, the paper)\n"
     "  --rim-retest on|off  in the small-plane pass, a cell failing only T3 is tested again on\n"
     "                   its inliers and may seed a plane (default on; off = it seeds nothing)\n"
     "  --release on|off once growth is stable, members farther than 3 robust sigma from their\n"
@@ -111,6 +114,7 @@ struct Options
   bool released_planes = true;
   bool edge_sides = true;
   bool support = true;
+  bool left_normals = false;
   bool connected_parts = true;
   bool bent_split = true;
   bool curved_check = false;
@@ -204,6 +208,8 @@ parseArguments (int argc, char** argv)
       o.released_planes = option.choice ("on", "off");
     else if (arg == "--edge-sides")
       o.edge_sides = option.choice ("on", "off");
+    else if (arg == "--left-normals")
+      o.left_normals = option.choice ("trimmed", "pca");
     else if (arg == "--support")
       o.support = option.choice ("on", "off");
     else if (arg == "--connected-parts")
@@ -360,6 +366,7 @@ run (const Options& o)
   seg.setReleasedPlaneSeeding (o.released_planes);
   seg.setEdgeSides (o.edge_sides);
   seg.setSupportCheck (o.support);
+  seg.setLeftNormalRefit (o.left_normals);
   seg.setConnectedParts (o.connected_parts);
   seg.setBentPlaneSplit (o.bent_split);
   seg.setCurvedPlaneCheck (o.curved_check);
@@ -385,10 +392,10 @@ run (const Options& o)
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
-       "pass, %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
+       "pass (%zu on the %zu left points' trimmed normals), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
-       stats.small_seeds, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
+       stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",

@@ -24,7 +24,8 @@
  *        setFarMemberRelease (false), setEdgeSides (false), setConnectedParts (false),
  *        setBentPlaneSplit (false), setReleasedPlaneSeeding (false), setSupportCheck (false);
  *        b9 & 64: setCurvedPlaneCheck (true) and setNormalFit (TrimmedPlane); b9 & 128: setFinalAssignment (All;
- *        None with b9 & 32, else Edges with b9 & 64; the default is Tails)
+ *        None with b9 & 32, else Edges with b9 & 64; the default is Tails); b9 & 16 without b9 & 64:
+ *        setLeftNormalRefit (true)
  *   10   slopes of the tilted plane
  *   11   index count (b11 * n / 128), jitter amplitude (b11 & 7), normals size mismatch (b11 & 128
  *        together with out-of-range indices)
@@ -250,6 +251,8 @@ configure (Seg& seg, int k, std::uint8_t flags, std::uint8_t b8, std::uint8_t or
     seg.setCurvedPlaneCheck (true);
     seg.setNormalFit (pcl::rspd::NormalFit::TrimmedPlane);
   }
+  if ((origin_code & 16) && !(origin_code & 64))
+    seg.setLeftNormalRefit (true);
   if (origin_code & 128)
     seg.setFinalAssignment ((origin_code & 32)   ? pcl::rspd::FinalAssignment::None
                             : (origin_code & 64) ? pcl::rspd::FinalAssignment::Edges

@@ -12,6 +12,7 @@
 #include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/plane_support.h>
+#include <pcl_rspd/robust_normals.h>
 #include <pcl_rspd/robust_statistics.h>
 
 #include <pcl/console/print.h>
@@ -556,6 +557,54 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
       return;
   }
 }
+
+/** \brief Members per plane whose trimmed normals measure the plane's MND under such normals:
+  * enough for a median and a MAD, a small part of the cost of refitting every member. */
+constexpr std::size_t kMndProbeSamples = 256;
+
+/** Trimmed normals for what growth left (departure, DetectorParameters::left_normal_refit): a copy
+  * of \a points whose samples no patch holds have the normal of their k-neighbourhood's reweighted
+  * trimmed plane. \a trimmed_max_mnd receives the largest MND of the first \a planes of \a patches
+  * (the grown ones) measured with such normals on up to kMndProbeSamples evenly spaced members each: a trimmed normal rests on about
+  * half the neighbourhood, so it is noisier than PCA's on a flat, noisy plane, and a seed on trimmed
+  * normals is compared with planes measured the same way. \return samples refitted */
+std::size_t
+refitLeftNormals (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                  const std::vector<PlanarPatch>& patches, std::size_t planes,
+                  const std::vector<std::uint32_t>& left, PointSet& refitted, double& trimmed_max_mnd)
+{
+  refitted = points;
+  TrimmedNormalStatistics stats;
+  refineNormalsTrimmed (refitted.points, graph, params.num_threads, refitted.normals, &stats, &left);
+
+  // The bound: the noisiest plane (largest MND on PCA normals), measured on trimmed normals.
+  std::size_t noisiest = planes;
+  for (std::size_t q = 0; q < planes; ++q)
+    if (noisiest == planes || patches[q].mnd > patches[noisiest].mnd)
+      noisiest = q;
+  trimmed_max_mnd = 0.0;
+  if (noisiest == planes)
+    return stats.refined;
+  const std::vector<std::uint32_t>& members = patches[noisiest].members;
+  std::vector<std::uint32_t> probe;
+  const std::size_t want = std::min (members.size (), kMndProbeSamples);
+  for (std::size_t t = 0; t < want; ++t)
+    probe.push_back (members[t * members.size () / want]);
+  std::vector<Eigen::Vector3f> probe_normals = points.normals;
+  refineNormalsTrimmed (points.points, graph, params.num_threads, probe_normals, nullptr, &probe);
+  std::vector<double> deviation;
+  for (const auto i : probe)
+  {
+    const double c = std::abs (probe_normals[i].cast<double> ().dot (patches[noisiest].normal));
+    deviation.push_back (std::acos (std::min (1.0, c)));
+  }
+  if (!deviation.empty ())
+  {
+    const RobustSpread spread = robustSpreadInPlace (deviation);
+    trimmed_max_mnd = spread.median + std::max (params.alpha * spread.mad, params.normal_deviation_floor);
+  }
+  return stats.refined;
+}
 } // namespace
 
 void
@@ -592,30 +641,48 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
 
   if (params.small_cell_size > 0 && params.small_cell_size < params.min_patch_size && !patches.empty ())
   {
-    // Small-cell pass (departure, see DetectorParameters::small_cell_size).
-    std::vector<double> mnds;
+    // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
+    // (left_normal_refit) on the trimmed normals of the samples still left.
+    double max_mnd = 0.0;
     for (const auto& p : patches)
-      mnds.push_back (p.mnd);
-    const double max_mnd = *std::max_element (mnds.begin (), mnds.end ());
+      max_mnd = std::max (max_mnd, p.mnd);
     std::vector<double> band = noiseBands (points, params, patches);
-    std::vector<std::uint32_t> left;
-    for (std::uint32_t i = 0; i < labels.size (); ++i)
-      if (labels[i] == kNoPatch)
-        left.push_back (i);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
-    std::vector<PlanarPatch> seeds = splitPhase (points, small, &st, &left, params.rim_cell_retest, &st.rim_seeds);
-    for (auto& seed : seeds)
+    PointSet refitted;
+    const std::size_t grown = patches.size ();
+    for (int round = 0; round < (params.left_normal_refit ? 2 : 1); ++round)
     {
-      if (seed.mnd > max_mnd)
-        continue; // noisier than every plane found: an edge band of bent normals, not a plane
-      if (isBandLayer (points, graph, patches, band, labels, seed))
-        continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate
-      for (const auto i : seed.members)
-        labels[i] = static_cast<std::uint32_t> (patches.size ());
-      patches.push_back (std::move (seed));
-      band.push_back (patches.back ().mdp); // its members' spread is not known yet: MDP
-      ++st.small_seeds;
+      double bound = max_mnd;
+      std::vector<std::uint32_t> left;
+      for (std::uint32_t i = 0; i < labels.size (); ++i)
+        if (labels[i] == kNoPatch)
+          left.push_back (i);
+      if (round == 1)
+      {
+        if (left.empty ())
+          break;
+        double trimmed_max_mnd = 0.0;
+        st.left_refitted = refitLeftNormals (points, graph, params, patches, grown, left, refitted, trimmed_max_mnd);
+        bound = std::max (max_mnd, trimmed_max_mnd);
+      }
+      const PointSet& round_points = round == 0 ? points : refitted;
+      std::size_t rim_seeds = 0;
+      std::vector<PlanarPatch> seeds = splitPhase (round_points, small, &st, &left, params.rim_cell_retest, &rim_seeds);
+      st.rim_seeds += rim_seeds;
+      for (auto& seed : seeds)
+      {
+        if (seed.mnd > bound)
+          continue; // noisier than every plane found: an edge band of bent normals, not a plane
+        if (isBandLayer (round_points, graph, patches, band, labels, seed))
+          continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate
+        for (const auto i : seed.members)
+          labels[i] = static_cast<std::uint32_t> (patches.size ());
+        patches.push_back (std::move (seed));
+        band.push_back (patches.back ().mdp); // its members' spread is not known yet: MDP
+        ++st.small_seeds;
+        st.small_seeds_trimmed += round;
+      }
     }
     if (st.small_seeds > 0)
     {

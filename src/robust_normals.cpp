@@ -182,10 +182,11 @@ private:
 
 void
 refineNormalsTrimmed (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
-                      std::vector<Eigen::Vector3f>& normals, TrimmedNormalStatistics* stats)
+                      std::vector<Eigen::Vector3f>& normals, TrimmedNormalStatistics* stats,
+                      const std::vector<std::uint32_t>* subset)
 {
   TrimmedNormalStatistics local;
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (points.size ());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (subset ? subset->size () : points.size ());
   const int k = graph.k ();
   const std::size_t m = static_cast<std::size_t> (std::max (k, 0)) + 1;
   const std::size_t h = (m + 4) / 2;
@@ -206,8 +207,9 @@ refineNormalsTrimmed (const std::vector<Eigen::Vector3f>& points, const Neighbor
     std::vector<int> kept;
     kept.reserve (m);
 #pragma omp for schedule(static, 4096)
-    for (std::ptrdiff_t i = 0; i < n; ++i)
+    for (std::ptrdiff_t t = 0; t < n; ++t)
     {
+      const std::ptrdiff_t i = subset ? static_cast<std::ptrdiff_t> ((*subset)[static_cast<std::size_t> (t)]) : t;
       // Offsets from the sample itself, for precision wherever the scene lies.
       q.clear ();
       const Eigen::Vector3d self = points[i].cast<double> ();

@@ -173,3 +173,32 @@ TEST (TrimmedNormals, TooFewNeighboursOrMismatchedSizesChangeNothing)
   refineNormalsTrimmed (s.points, g50, 1, short_normals);
   EXPECT_EQ (short_normals.size (), 3u);
 }
+
+TEST (TrimmedNormals, ASubsetRefitsOnlyItsOwnSamplesAndAsAWholeRunWould)
+{
+  // The detector refits only the samples growth left (DetectorParameters::left_normal_refit).
+  std::vector<int> face;
+  const PointSet s = roof (face);
+  const BothFits f = fitBoth (s);
+  std::vector<std::uint32_t> subset;
+  for (std::uint32_t i = 0; i < s.size (); i += 7)
+    subset.push_back (i);
+  std::vector<Eigen::Vector3f> part = f.pca;
+  TrimmedNormalStatistics stats;
+  refineNormalsTrimmed (s.points, f.graph, 2, part, &stats, &subset);
+  std::size_t changed = 0;
+  for (std::uint32_t i = 0; i < s.size (); ++i)
+  {
+    const bool in_subset = i % 7 == 0;
+    EXPECT_EQ (part[i], in_subset ? f.trimmed[i] : f.pca[i]) << i;
+    changed += part[i] != f.pca[i];
+  }
+  EXPECT_GT (changed, 0u);
+  EXPECT_LE (stats.refined, subset.size ());
+  EXPECT_GE (stats.refined, changed);
+  // An empty subset changes nothing.
+  std::vector<Eigen::Vector3f> none = f.pca;
+  const std::vector<std::uint32_t> empty;
+  refineNormalsTrimmed (s.points, f.graph, 1, none, nullptr, &empty);
+  EXPECT_EQ (none, f.pca);
+}

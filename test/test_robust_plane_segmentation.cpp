@@ -499,6 +499,46 @@ TEST (RobustPlaneSegmentation, GivenNormalsAreUsed)
     EXPECT_GT (pi.indices.size (), 1900u); // exact normals: nearly every sample joins
 }
 
+TEST (RobustPlaneSegmentation, LeftNormalRefitIsOffByDefaultAndSwitchable)
+{
+  // 60,000 samples: ε = 60, so the small-plane pass (cells down to 30) runs.
+  std::vector<int> truth;
+  auto cloud = boxCorner (20000, &truth);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  EXPECT_FALSE (seg.getLeftNormalRefit ());
+  seg.setInputCloud (cloud);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> on, off;
+  seg.setLeftNormalRefit (true);
+  EXPECT_TRUE (seg.getLeftNormalRefit ());
+  seg.segment (c, on);
+  ASSERT_EQ (on.size (), 3u);
+  EXPECT_GT (seg.getStatistics ().left_refitted, 0u); // the edge bands growth left
+  seg.setLeftNormalRefit (false);
+  seg.segment (c, off);
+  ASSERT_EQ (off.size (), 3u);
+  EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
+  EXPECT_EQ (seg.getStatistics ().small_seeds_trimmed, 0u);
+  // Not with trimmed normals everywhere, nor with the caller's normals (used as given).
+  seg.setLeftNormalRefit (true);
+  seg.setNormalFit (pcl::rspd::NormalFit::TrimmedPlane);
+  seg.segment (c, off);
+  ASSERT_EQ (off.size (), 3u);
+  EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
+  seg.setNormalFit (pcl::rspd::NormalFit::Pca);
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+  {
+    pcl::Normal n (0, 0, 0);
+    n.normal[truth[i] - 1] = 1.0f;
+    normals->push_back (n);
+  }
+  seg.setInputNormals (normals);
+  seg.segment (c, off);
+  ASSERT_EQ (off.size (), 3u);
+  EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
+}
+
 TEST (RobustPlaneSegmentation, DeterministicAcrossRunsAndThreads)
 {
   auto cloud = boxCorner (3000);

@@ -213,6 +213,8 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_support_on.pcd", {"--support", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_left_pca.pcd", {"--left-normals", "pca"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_left_trimmed.pcd", {"--left-normals=trimmed"}));
   // The plane support releases the facade's in-band outliers beyond its rims.
   ASSERT_EQ (runTool (make, {"facade", dir.file ("f"), "-n", "60000"}).status, 0);
   EXPECT_FALSE (labels ("f.pcd", "facade.pcd", {}) == labels ("f.pcd", "facade_nosupport.pcd", {"--support=off"}));

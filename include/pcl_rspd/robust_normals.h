@@ -57,10 +57,12 @@ struct TrimmedNormalStatistics
   * \param[in] num_threads OpenMP threads (0: default)
   * \param[in,out] normals one unit vector per sample, replaced where refined
   * \param[out] stats what happened (may be null)
+  * \param[in] subset only these samples are refined (all when null)
   */
 void
 refineNormalsTrimmed (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
-                      std::vector<Eigen::Vector3f>& normals, TrimmedNormalStatistics* stats = nullptr);
+                      std::vector<Eigen::Vector3f>& normals, TrimmedNormalStatistics* stats = nullptr,
+                      const std::vector<std::uint32_t>* subset = nullptr);
 
 } // namespace rspd
 } // namespace pcl

@@ -84,10 +84,17 @@ struct RobustPlane
   *  - small planes (setSmallPlaneSeeding(false) for the paper): a plane whose ε-sample octree cells
   *    always mix with a neighbour (a stair riser between two treads) is never seeded by Algorithm 1.
   *    Once grow-merge is stable, the samples no plane holds are split again with cells down to k + 1
-  *    samples (at most ε/2, at least 10); a new seed is kept only if its MND is at most the median
-  *    MND of the planes found (the scene's own noise level; edge bands of bent normals are noisier
-  *    and would bridge faces through M2), grow-merge runs again, and planes still smaller than ε are
-  *    dropped;
+  *    samples (at most ε/2, at least 10); a new seed is kept only if its MND is at most the largest
+  *    MND of the planes found (edge bands of bent normals are noisier and would bridge faces through
+  *    M2) and it is not a layer of a found plane's noise band, grow-merge runs again, and planes
+  *    still smaller than ε are dropped;
+  *  - trimmed normals for what growth left are available, off by default for their time
+  *    (setLeftNormalRefit(true)): that pass
+  *    splits a second time the samples still left, on the normals of their neighbourhoods'
+  *    reweighted least-trimmed-squares planes (bounded by the planes' MND under such normals);
+  *    growth and every later pass keep the PCA normals. A small plane's PCA normals bend towards its
+  *    neighbours over most of it (a table's front panel at 100,000 points), and T3 then fails every
+  *    cell of it. Only with normals estimated here by PCA;
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth;
   *  - coplanar groups, M4 (setCoplanarMerge(false) for the paper): groups join largest first and
@@ -295,6 +302,18 @@ public:
   /** \brief Whether the small-plane pass runs. */
   bool
   getSmallPlaneSeeding () const { return small_plane_seeding_; }
+
+  /** \brief Trimmed normals for what growth left (default off, for its time; false = the paper): the small-plane
+    * pass splits the samples it left a second time, on the normals of their k-neighbourhoods'
+    * reweighted least-trimmed-squares planes (pcl::rspd::refineNormalsTrimmed); growth and the later
+    * passes keep the PCA normals. Applies only to normals estimated here by PCA (not to normals
+    * given with setInputNormals, nor with setNormalFit(TrimmedPlane), where every normal is trimmed
+    * already). See pcl::rspd::DetectorParameters::left_normal_refit. */
+  void
+  setLeftNormalRefit (bool enable);
+  /** \brief Whether the left samples' normals are refitted. */
+  bool
+  getLeftNormalRefit () const { return left_normal_refit_; }
 
   /** \brief Rim cells in the small-plane pass (default true; false = they seed nothing): a cell that
     * passes T1 and T2 but fails T3 is tested again on its own inliers, which seed a plane if they
@@ -570,6 +589,7 @@ protected:
   double min_patch_ratio_ = 0.001;
   std::size_t min_patch_size_ = 0;
   bool small_plane_seeding_ = true;
+  bool left_normal_refit_ = false;
   pcl::rspd::NormalScale normal_scale_ = pcl::rspd::NormalScale::Automatic;
   pcl::rspd::DetectionFrame detection_frame_ = pcl::rspd::DetectionFrame::DominantPlanes;
   pcl::rspd::NormalFit normal_fit_ = pcl::rspd::NormalFit::Pca;

@@ -292,6 +292,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSmallPlaneSeeding (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setLeftNormalRefit (bool enable)
+{
+  left_normal_refit_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setRimCellRetest (bool enable)
 {
   params_.rim_cell_retest = enable;
@@ -590,6 +597,8 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
   params_.small_cell_size = small_plane_seeding_
       ? std::min<std::size_t> (static_cast<std::size_t> (k_used_ + 1), std::max<std::size_t> (10, params_.min_patch_size / 2))
       : 0;
+  // The caller's normals are used as given, and trimmed normals need no second fit.
+  params_.left_normal_refit = left_normal_refit_ && !normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca;
   return true;
 }
 
