@@ -558,51 +558,16 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
   }
 }
 
-/** \brief Members per plane whose trimmed normals measure the plane's MND under such normals:
-  * enough for a median and a MAD, a small part of the cost of refitting every member. */
-constexpr std::size_t kMndProbeSamples = 256;
-
 /** Trimmed normals for what growth left (departure, DetectorParameters::left_normal_refit): a copy
-  * of \a points whose samples no patch holds have the normal of their k-neighbourhood's reweighted
-  * trimmed plane. \a trimmed_max_mnd receives the largest MND of the first \a planes of \a patches
-  * (the grown ones) measured with such normals on up to kMndProbeSamples evenly spaced members each: a trimmed normal rests on about
-  * half the neighbourhood, so it is noisier than PCA's on a flat, noisy plane, and a seed on trimmed
-  * normals is compared with planes measured the same way. \return samples refitted */
+  * of \a points in which the samples \a left have the normal of their k-neighbourhood's reweighted
+  * trimmed plane. \return samples refitted */
 std::size_t
 refitLeftNormals (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
-                  const std::vector<PlanarPatch>& patches, std::size_t planes,
-                  const std::vector<std::uint32_t>& left, PointSet& refitted, double& trimmed_max_mnd)
+                  const std::vector<std::uint32_t>& left, PointSet& refitted)
 {
   refitted = points;
   TrimmedNormalStatistics stats;
   refineNormalsTrimmed (refitted.points, graph, params.num_threads, refitted.normals, &stats, &left);
-
-  // The bound: the noisiest plane (largest MND on PCA normals), measured on trimmed normals.
-  std::size_t noisiest = planes;
-  for (std::size_t q = 0; q < planes; ++q)
-    if (noisiest == planes || patches[q].mnd > patches[noisiest].mnd)
-      noisiest = q;
-  trimmed_max_mnd = 0.0;
-  if (noisiest == planes)
-    return stats.refined;
-  const std::vector<std::uint32_t>& members = patches[noisiest].members;
-  std::vector<std::uint32_t> probe;
-  const std::size_t want = std::min (members.size (), kMndProbeSamples);
-  for (std::size_t t = 0; t < want; ++t)
-    probe.push_back (members[t * members.size () / want]);
-  std::vector<Eigen::Vector3f> probe_normals = points.normals;
-  refineNormalsTrimmed (points.points, graph, params.num_threads, probe_normals, nullptr, &probe);
-  std::vector<double> deviation;
-  for (const auto i : probe)
-  {
-    const double c = std::abs (probe_normals[i].cast<double> ().dot (patches[noisiest].normal));
-    deviation.push_back (std::acos (std::min (1.0, c)));
-  }
-  if (!deviation.empty ())
-  {
-    const RobustSpread spread = robustSpreadInPlace (deviation);
-    trimmed_max_mnd = spread.median + std::max (params.alpha * spread.mad, params.normal_deviation_floor);
-  }
   return stats.refined;
 }
 } // namespace
@@ -650,10 +615,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
     PointSet refitted;
-    const std::size_t grown = patches.size ();
     for (int round = 0; round < (params.left_normal_refit ? 2 : 1); ++round)
     {
-      double bound = max_mnd;
       std::vector<std::uint32_t> left;
       for (std::uint32_t i = 0; i < labels.size (); ++i)
         if (labels[i] == kNoPatch)
@@ -662,9 +625,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       {
         if (left.empty ())
           break;
-        double trimmed_max_mnd = 0.0;
-        st.left_refitted = refitLeftNormals (points, graph, params, patches, grown, left, refitted, trimmed_max_mnd);
-        bound = std::max (max_mnd, trimmed_max_mnd);
+        st.left_refitted = refitLeftNormals (points, graph, params, left, refitted);
       }
       const PointSet& round_points = round == 0 ? points : refitted;
       std::size_t rim_seeds = 0;
@@ -672,7 +633,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       st.rim_seeds += rim_seeds;
       for (auto& seed : seeds)
       {
-        if (seed.mnd > bound)
+        if (seed.mnd > max_mnd)
           continue; // noisier than every plane found: an edge band of bent normals, not a plane
         if (isBandLayer (round_points, graph, patches, band, labels, seed))
           continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate

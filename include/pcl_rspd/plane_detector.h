@@ -85,9 +85,8 @@ struct DetectorParameters
   /** \brief Departure (trimmed normals for what growth left, part of the small-cell pass): after
     * the pass's split on the PCA normals, the samples still left get the normal of their
     * k-neighbourhood's reweighted least-trimmed-squares plane (refineNormalsTrimmed) in a copy, and
-    * are split a second time on those; a seed is kept if its MND is at most the largest MND the
-    * found planes show under such normals (measured on up to 256 members each) and it is no layer
-    * of a found plane. Growth and every later pass read the PCA normals. Near an edge a PCA normal
+    * are split a second time on those, with the same tests for a seed (its MND at most the largest
+    * MND of the planes found, no layer of one). Growth and every later pass read the PCA normals. Near an edge a PCA normal
     * averages both faces; on a small plane (a table's front panel, a cabinet top at 100,000 points)
     * most samples lie that near an edge, so T3 fails every cell of it and the plane is never seeded.
     * Only the left samples are refitted: refitting every sample costs about forty times the PCA

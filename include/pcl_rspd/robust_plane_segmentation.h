@@ -91,7 +91,7 @@ struct RobustPlane
   *  - trimmed normals for what growth left are available, off by default for their time
   *    (setLeftNormalRefit(true)): that pass
   *    splits a second time the samples still left, on the normals of their neighbourhoods'
-  *    reweighted least-trimmed-squares planes (bounded by the planes' MND under such normals);
+  *    reweighted least-trimmed-squares planes, with the same tests for a seed;
   *    growth and every later pass keep the PCA normals. A small plane's PCA normals bend towards its
   *    neighbours over most of it (a table's front panel at 100,000 points), and T3 then fails every
   *    cell of it. Only with normals estimated here by PCA;
