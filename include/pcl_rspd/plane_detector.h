@@ -86,13 +86,14 @@ struct DetectorParameters
     * the pass's split on the PCA normals, the samples still left get the normal of their
     * k-neighbourhood's reweighted least-trimmed-squares plane (refineNormalsTrimmed) in a copy, and
     * are split a second time on those, with the same tests for a seed (its MND at most the largest
-    * MND of the planes found, no layer of one). Growth and every later pass read the PCA normals. Near an edge a PCA normal
-    * averages both faces; on a small plane (a table's front panel, a cabinet top at 100,000 points)
-    * most samples lie that near an edge, so T3 fails every cell of it and the plane is never seeded.
-    * Only the left samples are refitted: refitting every sample costs about forty times the PCA
-    * normal stage. Letting growth read the trimmed normals too gained more F1 but was not stable:
-    * synpeb_pc01 moved 1 km away lost 0.015 (a trimmed subset is not continuous in the positions).
-    * Meant for normals estimated here by PCA (the class sets it so); false = the paper. */
+    * MND of the planes found, no layer of one). Growth and every later pass read the PCA normals.
+    * Near an edge a PCA normal averages both faces; on a small plane (a table's front panel, a
+    * cabinet top at 100,000 points) most samples lie that near an edge, so T3 fails every cell of it
+    * and the plane is never seeded. Only the left samples are refitted: refitting every sample costs
+    * about twenty times the PCA normal stage. Letting growth read the trimmed normals too gained
+    * more F1 but was not stable: synpeb_pc01 moved 1 km away lost 0.015 (a trimmed subset is not
+    * continuous in the positions). Off by default for its time; RobustPlaneSegmentation sets it
+    * only for normals it estimates by PCA. false = the paper. */
   bool left_normal_refit = false;
   /** \brief Departure (small planes at a rim), used by the small-cell pass only: a cell that passes
     * T1 and T2 but fails T3 is tested again on its own inliers, and seeds a plane if they pass. The
