@@ -34,7 +34,8 @@ findRoot (std::vector<std::atomic<std::uint32_t>>& parent, std::uint32_t x)
   }
 }
 
-void
+/** Links the sets of \a a and \a b. \return the root of the joined set, as seen at the time. */
+std::uint32_t
 unite (std::vector<std::atomic<std::uint32_t>>& parent, std::uint32_t a, std::uint32_t b)
 {
   for (;;)
@@ -42,12 +43,12 @@ unite (std::vector<std::atomic<std::uint32_t>>& parent, std::uint32_t a, std::ui
     a = findRoot (parent, a);
     b = findRoot (parent, b);
     if (a == b)
-      return;
+      return a;
     if (a > b)
       std::swap (a, b);
     std::uint32_t expected = b;
     if (parent[b].compare_exchange_strong (expected, a, std::memory_order_relaxed))
-      return;
+      return a;
   }
 }
 } // namespace
@@ -74,9 +75,12 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     const std::uint32_t i = static_cast<std::uint32_t> (ii);
     if (!core[i])
       continue;
+    // The row's samples join i's set one by one: starting each search from the set's last known
+    // root, not from i, saves walking i's path once per neighbour.
+    std::uint32_t set = i;
     graph.forEachNeighbor (i, [&] (std::uint32_t j) {
       if (core[j] && labels[j] == labels[i])
-        unite (parent, i, j);
+        set = unite (parent, set, j);
     });
   }
   std::vector<std::uint32_t> root (n);

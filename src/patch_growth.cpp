@@ -43,6 +43,8 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
   for (const auto p : order)
   {
     PlanarPatch& patch = patches[p];
+    if (flags && patch.grown)
+      continue;
     ++stamp;
     // The queue is the member list itself: members are popped in order and new ones appended.
     for (std::size_t head = 0; head < patch.members.size (); ++head)
@@ -75,6 +77,7 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
       if (flags && !open)
         (*flags)[m] |= kSaturated;
     }
+    patch.grown = flags != nullptr;
   }
   return added;
 }

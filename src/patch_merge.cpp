@@ -213,7 +213,12 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
 #else
     std::vector<std::uint64_t>& mine = found[0];
 #endif
-    std::unordered_map<std::uint64_t, bool> seen; // pair -> already found (true) or fails M2 (false)
+    // Pair -> kFailsM2, kFound, or kOpen (M2 holds, no edge has passed M3 yet).
+    enum : std::uint8_t { kFailsM2, kFound, kOpen };
+    std::unordered_map<std::uint64_t, std::uint8_t> seen;
+    // The last pair looked up: a boundary sample's neighbours across it are mostly in one patch.
+    std::uint64_t last_key = ~std::uint64_t (0);
+    std::uint8_t* last_state = nullptr; // references into an unordered_map survive rehashing
 #pragma omp for schedule(static, 4096)
     for (std::ptrdiff_t i = 0; i < n; ++i)
     {
@@ -229,21 +234,20 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
         const std::uint64_t key = (static_cast<std::uint64_t> (std::min (a, b)) << 32) | std::max (a, b);
         const PlanarPatch& pa = patches[a];
         const PlanarPatch& pb = patches[b];
-        auto it = seen.find (key);
-        if (it == seen.end ())
+        if (key != last_key)
         {
-          if (!normalsCompatible (pa, pb)) // M2
-          {
-            seen.emplace (key, false);
-            return;
-          }
+          auto it = seen.find (key);
+          if (it == seen.end ())
+            it = seen.emplace (key, normalsCompatible (pa, pb) ? kOpen : kFailsM2).first; // M2
+          last_key = key;
+          last_state = &it->second;
         }
-        else if (it->second || !normalsCompatible (pa, pb))
+        if (*last_state != kOpen)
           return;
         if (pb.isInlier (points.points[i], points.normals[i]) || // M3
             pa.isInlier (points.points[nb], points.normals[nb]))
         {
-          seen[key] = true;
+          *last_state = kFound;
           mine.push_back (key);
         }
       });
@@ -288,6 +292,7 @@ mergePatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pl
     PlanarPatch& rep = patches[r];
     rep.members.insert (rep.members.end (), patches[p].members.begin (), patches[p].members.end ());
     rep.first_index = std::min (rep.first_index, patches[p].first_index);
+    rep.grown = false; // the absorbed members were grown from with another plane
     patches[p].members.clear ();
     ++absorbed;
   }

@@ -78,6 +78,7 @@ PlanarPatch::setEstimate (const PlaneEstimate& estimate)
   mnd = estimate.mnd ();
   cos_mnd = std::cos (std::min (mnd, M_PI / 2.0));
   estimate_size = members.size ();
+  grown = false;
 }
 
 bool

@@ -113,6 +113,10 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
   std::vector<std::uint8_t> fresh (labels.size (), 0);    // released in this round
   std::vector<std::uint8_t> grouped (labels.size (), 0);  // in a small detached group
   std::vector<double> spread; // per plane, gapSpreads of the first round
+  // Per member, the lowest and highest index in its graph row (rows are sorted), read in the first
+  // round: a later round decodes only the rows whose range holds one of its releases, not all.
+  std::vector<std::uint32_t> row_lo (labels.size (), 0), row_hi (labels.size (), 0);
+  std::vector<std::uint32_t> released_now; // this round's releases, in increasing order
 
   for (int round = 0; round < kSupportRounds; ++round)
   {
@@ -134,7 +138,10 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
       Eigen::Vector3d directions = Eigen::Vector3d::Zero ();
       int directed = 0;
       bool near_other = false;
+      std::uint32_t lo = std::numeric_limits<std::uint32_t>::max (), hi = 0;
       graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+        lo = std::min (lo, m);
+        hi = std::max (hi, m);
         const std::uint32_t o = labels[m];
         if (o == kNoPatch)
           return;
@@ -148,10 +155,15 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
         nearest = std::min (nearest, length);
         if (length > 0.0)
         {
-          directions += t / length;
+          directions += t * (1.0 / length); // one division, not three
           ++directed;
         }
       });
+      if (round == 0)
+      {
+        row_lo[i] = lo;
+        row_hi[i] = hi;
+      }
       gap[i] = static_cast<float> (nearest);
       const double resultant = directed > 0 ? directions.norm () / directed : 1.0;
       candidate[i] = !near_other && resultant > kOneSidedResultant;
@@ -220,34 +232,37 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
         grouped[i] = 0;
       }
 
-    std::size_t now = 0;
+    released_now.clear ();
     for (std::ptrdiff_t i = 0; i < n; ++i)
       if (fresh[i])
       {
         release[i] = 1;
         labels[i] = kNoPatch;
-        ++now;
+        released_now.push_back (static_cast<std::uint32_t> (i));
       }
-    if (now == 0)
+    if (released_now.empty ())
       break;
 
     // Peeling: a release exposes the members behind it. Stale: a neighbour was released (its
-    // figures change); affected: it or a neighbour is stale (its verdict reads their gaps).
-#pragma omp parallel for schedule(static) num_threads(threads)
+    // figures change); affected: it or a neighbour is stale (its verdict reads their gaps). Only a
+    // candidate's verdict is read, and a member that is not stale keeps its candidacy, so affected
+    // is worked out for stale members and candidates alone.
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads)
     for (std::ptrdiff_t ii = 0; ii < n; ++ii)
     {
       const std::uint32_t i = static_cast<std::uint32_t> (ii);
       bool s = false;
-      if (labels[i] != kNoPatch)
+      const auto first = std::lower_bound (released_now.begin (), released_now.end (), row_lo[i]);
+      if (labels[i] != kNoPatch && first != released_now.end () && *first <= row_hi[i])
         graph.forEachNeighbor (i, [&] (std::uint32_t m) { s = s || fresh[m] != 0; });
       stale[i] = s;
     }
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads)
     for (std::ptrdiff_t ii = 0; ii < n; ++ii)
     {
       const std::uint32_t i = static_cast<std::uint32_t> (ii);
       bool a = stale[i] != 0;
-      if (labels[i] != kNoPatch && !a)
+      if (labels[i] != kNoPatch && !a && candidate[i])
         graph.forEachNeighbor (i, [&] (std::uint32_t m) { a = a || stale[m] != 0; });
       affected[i] = a;
     }

@@ -114,7 +114,8 @@ TEST (Reestimation, IterationCapIsHonouredAndReported)
 TEST (PatchGrowth, SkipFlagsChangeNothing)
 {
   // Grow-merge rounds with the saturated/interior flags kept across calls must give exactly what
-  // the same rounds give with no flags: the flags only skip rows that cannot add or merge anything.
+  // the same rounds give with no flags: the flags only skip rows that cannot add or merge anything,
+  // and patches already grown with their current plane (PlanarPatch::grown).
   PointSet s;
   rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.003f, 3);
   rspd_test::addRectangle (s, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 40, 40, 0.003f, 4);
@@ -131,9 +132,11 @@ TEST (PatchGrowth, SkipFlagsChangeNothing)
   std::vector<PlanarPatch> plain = seeds (), flagged = seeds ();
   auto plain_labels = labelSamples (s.size (), plain), flagged_labels = labelSamples (s.size (), flagged);
   std::vector<std::uint8_t> flags;
-  std::size_t skipped = 0;
-  for (int round = 0; round < 4; ++round)
+  std::size_t skipped = 0, skipped_patches = 0;
+  for (int round = 0; round < 6; ++round)
   {
+    for (const auto& patch : flagged)
+      skipped_patches += patch.grown ? 1 : 0;
     const std::size_t a = growPatches (s, g, plain, plain_labels);
     const std::size_t b = growPatches (s, g, flagged, flagged_labels, &flags);
     EXPECT_EQ (a, b) << "round " << round;
@@ -142,11 +145,22 @@ TEST (PatchGrowth, SkipFlagsChangeNothing)
     ASSERT_EQ (plain.size (), flagged.size ());
     for (std::size_t p = 0; p < plain.size (); ++p)
       EXPECT_EQ (plain[p].members, flagged[p].members);
-    // Move the planes a little, as re-estimation does, so the next round has work to do.
+    // Every other round, widen the planes' distance limits, as re-estimation does, so the next
+    // round has work to do; in between, the planes stay and growth must be skipped.
+    if (round % 2 == 1)
+      continue;
     for (auto* set : {&plain, &flagged})
       for (auto& patch : *set)
-        patch.mdp *= 1.3;
+      {
+        PlaneEstimate e;
+        e.center = patch.center;
+        e.normal = patch.normal;
+        e.distance_halfwidth = 1.3 * patch.mdp;
+        e.angle_halfwidth = patch.mnd;
+        patch.setEstimate (e);
+      }
   }
+  EXPECT_GT (skipped_patches, 0u); // the rounds after an unchanged one skipped (some) patches
   for (const auto f : flags)
     skipped += (f & kInterior) ? 1 : 0;
   EXPECT_GT (skipped, s.size () / 2); // most samples end up interior: the skip is real

@@ -46,7 +46,10 @@ enum SampleFlag : std::uint8_t
   * \param[in] graph directed k-NN graph (out-neighbours are visited)
   * \param[in,out] patches members are appended (first_index kept up to date)
   * \param[in,out] labels per-sample patch label, updated
-  * \param[in,out] flags SampleFlag bits per sample, kept across calls (null: none kept)
+  * \param[in,out] flags SampleFlag bits per sample, kept across calls (null: none kept). With
+  *   flags, the caller keeps every labelled sample labelled between calls (as grow-merge does), and
+  *   a patch already grown with its current plane and members (PlanarPatch::grown) is skipped: each
+  *   neighbour still free was refused by that same plane, so growing it again would add nothing.
   * \return samples added
   */
 std::size_t

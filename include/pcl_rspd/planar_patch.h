@@ -49,6 +49,9 @@ struct PlanarPatch
   double cos_mnd = 1.0;                               ///< cos(MND), so the inlier test needs no acos
   std::size_t estimate_size = 0;                      ///< members.size() at the last estimate (Sec. 3.5)
   std::uint32_t first_index = std::numeric_limits<std::uint32_t>::max (); ///< lowest member (tie-break)
+  /** Grown from every member with the current plane (growPatches with flags): until the plane or
+    * the members change otherwise, growing it again would add nothing. */
+  bool grown = false;
 
   /** \brief Take C, N, MDP and MND from \a estimate, and remember the current size as estimated. */
   void
