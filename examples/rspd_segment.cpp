@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -81,8 +81,9 @@ const char* const kHelp =
     "                             accurate at edges, ~20x the normal stage's time)\n"
     "  --frame planes|axes        work along the dominant plane orientations (independent of how the\n"
     "                             cloud is rotated) or along its coordinate axes (the paper)\n"
-    "  --outlier-seeds drop|keep  drop split seeds whose MND is an outlier among all seeds\n"
-    "                   (default drop; keep = the paper)\n"
+    "  --outlier-seeds retest|drop|keep  drop split seeds whose MND is an outlier among all\n"
+    "                   seeds; 'retest' (default) tests each again once growth is stable, on its\n"
+    "                   points no plane took (a flat one seeds a plane); keep = the paper\n"
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
     "  --assign M       once growth is stable, give points growth left out to a neighbouring plane\n"
@@ -119,6 +120,7 @@ struct Options
   bool bent_split = true;
   bool curved_check = false;
   bool drop_outlier_seeds = true;
+  bool retest_outlier_seeds = true;
   bool dominant_frame = true;
   bool trimmed_normals = false;
   pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Tails;
@@ -221,7 +223,13 @@ parseArguments (int argc, char** argv)
     else if (arg == "--frame")
       o.dominant_frame = option.choice ("planes", "axes");
     else if (arg == "--outlier-seeds")
-      o.drop_outlier_seeds = option.choice ("drop", "keep");
+    {
+      const std::string v = value ();
+      if (v != "retest" && v != "drop" && v != "keep")
+        throw UsageError{"--outlier-seeds needs 'retest', 'drop' or 'keep' (got '" + v + "')"};
+      o.drop_outlier_seeds = v != "keep";
+      o.retest_outlier_seeds = v == "retest";
+    }
     else if (arg == "--curved-check")
       o.curved_check = option.choice ("on", "off");
     else if (arg == "--assign")
@@ -371,6 +379,7 @@ run (const Options& o)
   seg.setBentPlaneSplit (o.bent_split);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
+  seg.setOutlierSeedRetest (o.retest_outlier_seeds);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);
   seg.setDetectionFrame (o.dominant_frame ? pcl::rspd::DetectionFrame::DominantPlanes
                                           : pcl::rspd::DetectionFrame::InputAxes);
@@ -391,11 +400,11 @@ run (const Options& o)
                  (o.verbose ? std::string () : std::string (" (run with -v for details)")));
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
-  log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches, %zu kept by the small-plane "
+  log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu kept by the small-plane "
        "pass (%zu on the %zu left points' trimmed normals), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
-       stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
+       stats.outlier_seeds, stats.retested_seeds, stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",

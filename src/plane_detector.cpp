@@ -376,7 +376,7 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
   * DetectorParameters::drop_outlier_seeds): log MND above median + α·MAD of the seeds' log MND.
   * \return seeds dropped */
 std::size_t
-dropOutlierSeeds (const DetectorParameters& params, std::vector<PlanarPatch>& seeds)
+dropOutlierSeeds (const DetectorParameters& params, std::vector<PlanarPatch>& seeds, std::vector<PlanarPatch>* dropped)
 {
   // Log scale: normal noise differs by factors across a scene (near and far, smooth and rough),
   // and a factor is what the robust spread should be measured in. MND below the normal-deviation
@@ -393,9 +393,12 @@ dropOutlierSeeds (const DetectorParameters& params, std::vector<PlanarPatch>& se
   const RobustSpread spread = robustSpreadInPlace (logs);
   const double limit = std::exp (spread.median + params.alpha * spread.mad) + params.normal_deviation_floor;
   const std::size_t before = seeds.size ();
-  seeds.erase (std::remove_if (seeds.begin (), seeds.end (),
-                               [&] (const PlanarPatch& p) { return p.mnd > limit; }),
-               seeds.end ());
+  const auto outlier = [&] (const PlanarPatch& p) { return p.mnd > limit; };
+  if (dropped)
+    for (const auto& p : seeds)
+      if (outlier (p))
+        dropped->push_back (p);
+  seeds.erase (std::remove_if (seeds.begin (), seeds.end (), outlier), seeds.end ());
   return before - seeds.size ();
 }
 
@@ -529,6 +532,18 @@ offerReleasedSamples (const PointSet& points, const NeighborGraph& graph, const 
   return restored;
 }
 
+/** Whether a seed noisier than the planes grown may still seed one: noise, not a bend, spreads its
+  * normals. A quadric fitted to its samples (measureCurvature) explains less than
+  * min_curvature_share of their residual and turns the normal from their middle to their rim by
+  * less than half the seed's MND (a facet of a tank or pipe fails the one test or, with few samples
+  * to fit, the other). */
+bool
+flatSeed (const PointSet& points, const DetectorParameters& params, const PlanarPatch& seed)
+{
+  const PlaneCurvature c = measureCurvature (points, seed.members);
+  return c.share < params.min_curvature_share && c.half_bend < 0.5 * seed.mnd;
+}
+
 /** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
 void
 growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
@@ -592,9 +607,10 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   // Split (Sec. 3.1).
   std::vector<PlanarPatch> patches = splitPhase (points, params, &st);
   std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
+  std::vector<PlanarPatch> outlier_seeds;
   if (params.drop_outlier_seeds && patches.size () >= 3)
   {
-    st.outlier_seeds = dropOutlierSeeds (params, patches);
+    st.outlier_seeds = dropOutlierSeeds (params, patches, params.retest_outlier_seeds ? &outlier_seeds : nullptr);
     labels = labelSamples (points.size (), patches);
   }
   const auto t1 = Clock::now ();
@@ -604,13 +620,45 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   std::vector<std::uint8_t> flags (points.size (), 0); // see SampleFlag
   growMergeUntilStable (points, graph, params, patches, labels, flags, st);
 
+  if (!outlier_seeds.empty () && !patches.empty ())
+  {
+    // Outlier seeds, tested again (departure, see DetectorParameters::retest_outlier_seeds) on
+    // what growth left of them; before the small-plane pass, whose seeds may be as noisy as they.
+    const std::vector<double> band = noiseBands (points, params, patches);
+    for (const auto& seed : outlier_seeds)
+    {
+      std::vector<std::uint32_t> left;
+      for (const auto i : seed.members)
+        if (labels[i] == kNoPatch)
+          left.push_back (i);
+      if (left.size () < params.min_patch_size)
+        continue;
+      PlanarityResult test = robustPlanarityTest (points, left, params);
+      if (test.verdict != PlanarityVerdict::Planar)
+        continue;
+      PlanarPatch plane;
+      plane.members = std::move (test.inliers);
+      plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
+      plane.setEstimate (test.estimate);
+      if (isBandLayer (points, graph, patches, band, labels, plane))
+        continue;
+      if (!flatSeed (points, params, plane))
+        continue;
+      for (const auto i : plane.members)
+        labels[i] = static_cast<std::uint32_t> (patches.size ());
+      plane.retested = true;
+      patches.push_back (std::move (plane));
+      ++st.retested_seeds;
+    }
+  }
   if (params.small_cell_size > 0 && params.small_cell_size < params.min_patch_size && !patches.empty ())
   {
     // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
     // (left_normal_refit) on the trimmed normals of the samples still left.
-    double max_mnd = 0.0;
+    // The noisiest plane grown, and the noisiest outlier seed seeded again (not grown yet).
+    double max_mnd = 0.0, max_retested_mnd = 0.0;
     for (const auto& p : patches)
-      max_mnd = std::max (max_mnd, p.mnd);
+      (p.retested ? max_retested_mnd : max_mnd) = std::max (p.retested ? max_retested_mnd : max_mnd, p.mnd);
     std::vector<double> band = noiseBands (points, params, patches);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
@@ -633,25 +681,36 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       st.rim_seeds += rim_seeds;
       for (auto& seed : seeds)
       {
-        if (seed.mnd > max_mnd)
+        if (seed.mnd > max_mnd && (seed.mnd > max_retested_mnd || !flatSeed (round_points, params, seed)))
           continue; // noisier than every plane found: an edge band of bent normals, not a plane
         if (isBandLayer (round_points, graph, patches, band, labels, seed))
           continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate
         for (const auto i : seed.members)
           labels[i] = static_cast<std::uint32_t> (patches.size ());
+        seed.retested = seed.mnd > max_mnd; // let in by a retested seed: judged again once grown
         patches.push_back (std::move (seed));
         band.push_back (patches.back ().mdp); // its members' spread is not known yet: MDP
         ++st.small_seeds;
         st.small_seeds_trimmed += round;
       }
     }
-    if (st.small_seeds > 0)
-    {
-      growMergeUntilStable (points, graph, params, patches, labels, flags, st);
-      patches.erase (std::remove_if (patches.begin (), patches.end (),
-                                     [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
-                     patches.end ());
-    }
+  }
+  if (st.small_seeds > 0 || st.retested_seeds > 0)
+  {
+    growMergeUntilStable (points, graph, params, patches, labels, flags, st);
+    patches.erase (std::remove_if (patches.begin (), patches.end (),
+                                   [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
+                   patches.end ());
+  }
+  if (st.retested_seeds > 0)
+  {
+    // A plane an outlier seed seeded again: grown, it has the samples its seed may have lacked to
+    // show a bend, and it must still be flat (at 10,000 points a pipe is sampled a few times
+    // around, and its facets' seeds are too small to tell).
+    patches.erase (std::remove_if (patches.begin (), patches.end (),
+                                   [&] (const PlanarPatch& p) { return p.retested && !flatSeed (points, params, p); }),
+                   patches.end ());
+    labels = labelSamples (points.size (), patches);
   }
 
   if (params.release_far_members && !patches.empty ())

@@ -52,6 +52,10 @@ struct PlanarPatch
   /** Grown from every member with the current plane (growPatches with flags): until the plane or
     * the members change otherwise, growing it again would add nothing. */
   bool grown = false;
+  /** Seeded by an outlier seed tested again (DetectorParameters::retest_outlier_seeds), or by a
+    * small-plane seed as noisy, which only such a seed lets in; kept by a merge where it is the
+    * larger part. Such a plane is judged flat again once grown. */
+  bool retested = false;
 
   /** \brief Take C, N, MDP and MND from \a estimate, and remember the current size as estimated. */
   void

@@ -107,6 +107,15 @@ struct DetectorParameters
     * several metres wide holding wall, recessed windows and outliers, MND 51° where seeds have 15°);
     * grown and merged, such a seed turns the scene into one plane. false = the paper. */
   bool drop_outlier_seeds = true;
+  /** \brief Departure (outlier seeds tested again): with drop_outlier_seeds, once growth is stable,
+    * each dropped seed's samples that no plane took are put to the planarity test again (T1-T3, ε)
+    * and seed a plane if they pass, are no layer of a plane found and are flat (a quadric explains
+    * less than min_curvature_share of their residual and bends by less than half their MND: noise,
+    * not a bend, spreads their normals). Dropping alone assumes one noise level: beside a smooth
+    * floor, every seed on rough boxes is an outlier. The small-plane pass then also takes flat seeds
+    * up to the noisiest retested seed's MND, and each plane so seeded must still be flat once grown.
+    * false = outlier seeds are only dropped. */
+  bool retest_outlier_seeds = true;
   /** \brief Departure (M4, coplanar groups): two groups merge only if at least (1 - T3 ratio) of the
     * samples of the group whose representative is smaller lie within the larger representative's
     * plane (the plane the merged group keeps) by the wider of the two representatives' MDP, or
@@ -208,6 +217,7 @@ struct DetectorStatistics
   std::size_t cells_tested = 0;      ///< planarity tests run during the split
   std::size_t seed_patches = 0;      ///< patches the split produced
   std::size_t outlier_seeds = 0;     ///< seeds dropped as MND outliers
+  std::size_t retested_seeds = 0;    ///< of those, seeded again from what growth left (retest_outlier_seeds)
   int iterations = 0;                ///< grow-merge iterations
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
   std::size_t merges = 0;            ///< patches absorbed by merging

@@ -96,7 +96,8 @@ struct RobustPlane
   *    neighbours over most of it (a table's front panel at 100,000 points), and T3 then fails every
   *    cell of it. Only with normals estimated here by PCA;
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
-  *    all seeds of the split (log scale, median + α·MAD) is dropped before growth;
+  *    all seeds of the split (log scale, median + α·MAD) is dropped before growth, and tested again
+  *    on what growth left of it (setOutlierSeedRetest(false): not), seeding a plane if flat;
   *  - coplanar groups, M4 (setCoplanarMerge(false) for the paper): groups join largest first and
   *    only when most of the smaller one lies in the distance band of the plane the union keeps (or
   *    of the least-squares plane of the larger group's samples), so facets of a faceted or curved
@@ -422,6 +423,16 @@ public:
   /** \brief Whether outlier seeds are dropped. */
   bool
   getDropOutlierSeeds () const { return params_.drop_outlier_seeds; }
+
+  /** \brief With outlier seeds dropped, test each again once growth is stable, on its samples no
+    * plane took, and seed a plane if they pass T1-T3 and a quadric does not explain their spread
+    * (default on; a thin board's noisy faces in a scene of smooth walls). See
+    * pcl::rspd::DetectorParameters::retest_outlier_seeds. */
+  void
+  setOutlierSeedRetest (bool enable);
+  /** \brief Whether dropped outlier seeds are tested again. */
+  bool
+  getOutlierSeedRetest () const { return params_.retest_outlier_seeds; }
 
   /** \brief Curved-surface check (default off, as the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the

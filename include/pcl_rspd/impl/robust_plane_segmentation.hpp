@@ -376,6 +376,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setDropOutlierSeeds (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setOutlierSeedRetest (bool enable)
+{
+  params_.retest_outlier_seeds = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 {
   params_.curved_plane_check = enable;
