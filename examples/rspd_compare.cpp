@@ -79,7 +79,7 @@ const char* const kHelp =
     "  CLOUD            .pcd or .ply; normal_x/y/z are used by every method if present\n"
     "  TRUTH            per-point ground truth: PCD with a 'label' field, or raw uint32 LE (.gt)\n"
     "  --scene NAME     use a generated scene with its truth instead of CLOUD (cube, room, staircase,\n"
-    "                   facade, industrial, plane); -n N points, --seed S random seed\n"
+    "                   facade, industrial, boxes, plane); -n N points, --seed S random seed\n"
     "  -k N             neighbours for the shared normal estimation (default 50)\n"
     "  --threads N      OpenMP threads for the normals and rspd (default: OpenMP's default)\n"
     "  --voxel F        evaluation voxel edge as a fraction of the largest extent (default 0.01)\n"

@@ -26,7 +26,7 @@ print("%.3f %.3f %.3f %d/%d %d %d" % (j["f1"], j["precision"], j["recall"], j["f
 
 echo "| cloud | F1 | precision | recall | found | fragments | false planes |"
 echo "|---|---|---|---|---|---|---|"
-for s in cube:1000000 cube room staircase facade industrial; do
+for s in cube:1000000 cube room staircase facade industrial boxes; do
   name=${s%%:*}; n=${s#*:}; [ "$n" = "$s" ] && n=""
   "$bin/rspd_make_scene" "$name" "$tmp/scene" ${n:+-n $n} > /dev/null
   read -r f p r found frag false < <(score "$tmp/scene.pcd" "$tmp/scene.gt")
@@ -46,7 +46,7 @@ echo
 echo "| cloud | F1 as given | x1000 | 1 km away | rotation 1 | rotation 2 | rotation 3 | largest change |"
 echo "|---|---|---|---|---|---|---|---|"
 clouds=()
-for s in cube room staircase facade industrial; do
+for s in cube room staircase facade industrial boxes; do
   "$bin/rspd_make_scene" "$s" "$tmp/$s" > /dev/null
   clouds+=("$tmp/$s")
 done

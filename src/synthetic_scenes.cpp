@@ -406,6 +406,50 @@ buildStaircase (const Params& prm, SceneRandom& rng)
   return g;
 }
 
+/** \brief Boxes of rising roughness: a floor 12 x 12 m (z = 0) and a wall 12 x 3 m (y = 6) at the
+  * scene's noise, and six boxes 1.5 x 1.0 m, 0.8 to 1.8 m tall, in two rows, whose four sides and
+  * top have 1, 3, 5, 7.5, 10 and 15 times that noise (2 mm to 3 cm by default): noise that differs
+  * from surface to surface, as between materials and ranges in a scan. 32 planes. */
+Generated
+buildBoxes (const Params& prm, SceneRandom& rng)
+{
+  const double roughness[6] = {1.0, 3.0, 5.0, 7.5, 10.0, 15.0};
+  Generated g;
+  g.extent = {Eigen::Vector3d (-6.0, -6.0, 0.0), Eigen::Vector3d (6.0, 6.0, 3.0)};
+  std::vector<std::vector<Surface>> groups (7); // 0: floor and wall; 1-6: the boxes
+  std::vector<Exclusion> footprints;
+  double covered = 0.0;
+  std::uint32_t label = 2; // 1: floor, 2: wall
+  for (int i = 0; i < 6; ++i)
+  {
+    const Eigen::Vector3d lo (-5.25 + (i % 3) * 4.0, -3.0 + (i / 3) * 5.0, 0.0);
+    const Eigen::Vector3d hi = lo + Eigen::Vector3d (1.5, 1.0, 0.8 + 0.2 * i);
+    footprints.push_back (Exclusion::box (Eigen::Vector3d (lo.x (), lo.y (), -1.0), hi));
+    covered += (hi.x () - lo.x ()) * (hi.y () - lo.y ());
+    auto& box = groups[i + 1];
+    box.push_back (planeSurface (axisRect (0, lo.x (), lo.y (), hi.y (), lo.z (), hi.z ()), ++label));
+    box.push_back (planeSurface (axisRect (0, hi.x (), lo.y (), hi.y (), lo.z (), hi.z ()), ++label));
+    box.push_back (planeSurface (axisRect (1, lo.y (), lo.x (), hi.x (), lo.z (), hi.z ()), ++label));
+    box.push_back (planeSurface (axisRect (1, hi.y (), lo.x (), hi.x (), lo.z (), hi.z ()), ++label));
+    box.push_back (planeSurface (axisRect (2, hi.z (), lo.x (), hi.x (), lo.y (), hi.y ()), ++label));
+  }
+  groups[0].push_back (planeSurface (axisRect (2, 0.0, -6.0, 6.0, -6.0, 6.0), 1, footprints, covered));
+  groups[0].push_back (planeSurface (axisRect (1, 6.0, -6.0, 6.0, 0.0, 3.0), 2));
+  g.num_candidates = label;
+  std::vector<double> areas;
+  for (const auto& group : groups)
+  {
+    double a = 0.0;
+    for (const auto& s : group)
+      a += s.area;
+    areas.push_back (a);
+  }
+  const std::vector<std::size_t> counts = apportion (prm.num_points - prm.num_outliers, areas);
+  for (std::size_t k = 0; k < groups.size (); ++k)
+    sampleSurfaces (groups[k], counts[k], k == 0 ? prm.noise : roughness[k - 1] * prm.noise, rng, g.samples);
+  return g;
+}
+
 /** \brief Facade 20 m wide x 10 m tall in the plane y = 0, with 5 x 3 windows of 1.6 x 1.6 m
   * whose glass is recessed 0.2 m (y = 0.2). Planes: the wall (with the window openings cut out)
   * and the 15 recessed window planes, 16 in all. The reveals (the recess side faces) are left
@@ -708,6 +752,7 @@ const SceneSpec kScenes[] = {
   {"staircase", 100000, 0.002, 0.0, &buildStaircase},
   {"facade", 200000, 0.03, 0.15, &buildFacade},
   {"industrial", 300000, 0.005, 0.0, &buildIndustrial},
+  {"boxes", 300000, 0.002, 0.0, &buildBoxes},
   {"plane", 10000, 0.0, 0.0, &buildPlane},
 };
 

@@ -377,7 +377,9 @@ TEST (Scenario, SparseStaircaseAndYardNeedTheAutomaticK)
   EXPECT_GE (given.score.f1, 0.96);
   const Detection yard = detectScene ("industrial", o);
   EXPECT_EQ (yard.score.found, 6);
-  EXPECT_EQ (yard.score.false_planes, 0);
+  // One false plane since outlier seeds are tested again: 85 samples of a pipe, whose bend (0.46
+  // rad) is just under half its MND (0.94); 1.0 % of the curved samples (0 with setOutlierSeedRetest (false)).
+  EXPECT_LE (yard.score.false_planes, 1);
   EXPECT_GE (yard.score.f1, 0.98);
   EXPECT_LE (yard.curved_claimed, 0.02);
 }
@@ -413,67 +415,24 @@ TEST (Scenario, CurvedSurfacesNeedOneOfTheTwoGuards)
   EXPECT_GE (check.score.f1, 0.99);
 }
 
-namespace
-{
-/** A smooth floor and wall (σ 2 mm) and six boxes whose faces are ever rougher (σ 2 mm to 3 cm),
-  * sampled uniformly at 2,000 points per m²: 32 planes. */
-void
-roughBoxesScene (pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<std::uint32_t>& truth)
-{
-  std::mt19937 rng (7);
-  std::uniform_real_distribution<double> u01 (0.0, 1.0);
-  std::normal_distribution<double> gauss (0.0, 1.0);
-  std::uint32_t label = 0;
-  const auto rect = [&] (const Eigen::Vector3d& o, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double sigma) {
-    const Eigen::Vector3d n = a.cross (b).normalized ();
-    const auto count = static_cast<int> (a.cross (b).norm () * 2000.0);
-    ++label;
-    for (int i = 0; i < count; ++i)
-    {
-      const Eigen::Vector3d p = o + u01 (rng) * a + u01 (rng) * b + sigma * gauss (rng) * n;
-      cloud.push_back (pcl::PointXYZ (static_cast<float> (p.x ()), static_cast<float> (p.y ()), static_cast<float> (p.z ())));
-      truth.push_back (label);
-    }
-  };
-  const Eigen::Vector3d X = Eigen::Vector3d::UnitX (), Y = Eigen::Vector3d::UnitY (), Z = Eigen::Vector3d::UnitZ ();
-  rect ({-6, -6, 0}, 12 * X, 12 * Y, 0.002);
-  rect ({-6, 6, 0}, 12 * X, 3 * Z, 0.002);
-  const double sigma[6] = {0.002, 0.006, 0.01, 0.015, 0.02, 0.03};
-  for (int i = 0; i < 6; ++i)
-  {
-    const Eigen::Vector3d size (1.5, 1.0, 0.8 + 0.2 * i);
-    const Eigen::Vector3d lo = Eigen::Vector3d (-4.5 + (i % 3) * 4, -2.5 + (i / 3) * 5, 0.5 * size.z ()) - 0.5 * size;
-    const Eigen::Vector3d sx = size.x () * X, sy = size.y () * Y, sz = size.z () * Z;
-    rect (lo, sy, sz, sigma[i]);
-    rect (lo + sx, sy, sz, sigma[i]);
-    rect (lo, sx, sz, sigma[i]);
-    rect (lo + sy, sx, sz, sigma[i]);
-    rect (lo + sz, sx, sy, sigma[i]);
-  }
-}
-} // namespace
-
 TEST (Scenario, RoughBoxesOnASmoothFloorNeedTheOutlierSeedRetest)
 {
   // Noise that differs from surface to surface: beside a smooth floor and wall every seed on the
   // rougher boxes is an MND outlier, dropped, and the small-plane pass takes no seed noisier than
   // the planes grown. Tested again once growth is stable (flat, not bent), they seed their faces,
   // and let the small-plane pass seed faces as noisy.
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  std::vector<std::uint32_t> truth;
-  roughBoxesScene (cloud, truth);
-  const Detection retest = detect (cloud, truth);
-  const Detection drop = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic,
-                                 [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
-                                   EXPECT_TRUE (s.getOutlierSeedRetest ());
-                                   s.setOutlierSeedRetest (false);
-                                 });
+  const Detection retest = detectScene ("boxes");
+  const Detection drop = detectScene ("boxes", {}, true, pcl::rspd::NormalScale::Automatic,
+                                      [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                                        EXPECT_TRUE (s.getOutlierSeedRetest ());
+                                        s.setOutlierSeedRetest (false);
+                                      });
   EXPECT_GT (retest.stats.retested_seeds, 0u);
   EXPECT_EQ (drop.stats.retested_seeds, 0u);
-  EXPECT_GE (retest.score.found, 28);
+  EXPECT_EQ (retest.score.found, 32);
   EXPECT_LE (drop.score.found, 12);
-  EXPECT_GE (retest.score.f1, 0.95);
-  EXPECT_LE (retest.score.false_planes, 3);
+  EXPECT_GE (retest.score.f1, 0.99);
+  EXPECT_EQ (retest.score.false_planes, 0);
 }
 
 TEST (Scenario, RotatedFacadeKeepsItsPlanes)

@@ -31,7 +31,8 @@ defaults ()
 {
   static const std::map<std::string, std::pair<std::size_t, int>> d = {
     {"cube", {100000, 6}},       {"room", {200000, 12}},      {"staircase", {100000, 30}},
-    {"facade", {200000, 16}},    {"industrial", {300000, 6}}, {"plane", {10000, 1}}};
+    {"facade", {200000, 16}},    {"industrial", {300000, 6}}, {"boxes", {300000, 32}},
+    {"plane", {10000, 1}}};
   return d;
 }
 
@@ -80,7 +81,7 @@ checkConsistent (const Scene& scene, std::size_t expected_points)
 }
 } // namespace
 
-TEST (SyntheticScenes, NamesAreTheSixScenes)
+TEST (SyntheticScenes, NamesAreTheSevenScenes)
 {
   const std::vector<std::string> names = pcl::rspd::sceneNames ();
   ASSERT_EQ (names.size (), defaults ().size ());
@@ -191,7 +192,36 @@ TEST_P (DefaultScene, SameSeedSameSceneOtherSeedOtherScene)
 
 INSTANTIATE_TEST_SUITE_P (AllScenes, DefaultScene,
                           ::testing::Values ("cube", "room", "staircase", "facade", "industrial",
-                                             "plane"));
+                                             "boxes", "plane"));
+
+TEST (SyntheticScenes, BoxesGetRougherFromBoxToBox)
+{
+  // The floor and wall carry the scene's noise, the six boxes 1, 3, 5, 7.5, 10 and 15 times it:
+  // the spread of a top's heights about its mean, box by box, follows those factors.
+  SceneOptions o;
+  o.noise = 0.004;
+  const Scene scene = makeScene ("boxes", o);
+  ASSERT_EQ (scene.num_planes, 32);
+  const double factor[6] = {1.0, 3.0, 5.0, 7.5, 10.0, 15.0};
+  for (int box = 0; box < 6; ++box)
+  {
+    const std::uint32_t top = 3 + 5 * static_cast<std::uint32_t> (box) + 4; // floor 1, wall 2, then 5 faces a box
+    double sum = 0.0, sum2 = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+      if (scene.labels[i] == top)
+      {
+        sum += scene.cloud[i].z;
+        sum2 += static_cast<double> (scene.cloud[i].z) * scene.cloud[i].z;
+        ++n;
+      }
+    ASSERT_GT (n, 500u) << box;
+    const double mean = sum / static_cast<double> (n);
+    EXPECT_NEAR (mean, 0.8 + 0.2 * box, 0.01) << box;
+    const double sigma = std::sqrt (std::max (0.0, sum2 / static_cast<double> (n) - mean * mean));
+    EXPECT_NEAR (sigma, factor[box] * o.noise, 0.15 * factor[box] * o.noise) << box;
+  }
+}
 
 TEST (SyntheticScenes, CubeSamplesLieOnTheirFace)
 {

@@ -45,7 +45,7 @@ TEST (MakeSceneCli, ListsScenesAndRefusesBadUsage)
   REQUIRE_TOOL (tool, "rspd_make_scene");
   const auto list = runTool (tool, {"--list"});
   EXPECT_EQ (list.status, 0);
-  for (const char* s : {"cube", "room", "staircase", "facade", "industrial"})
+  for (const char* s : {"cube", "room", "staircase", "facade", "industrial", "boxes"})
     EXPECT_NE (list.out.find (s), std::string::npos) << s;
   EXPECT_EQ (runTool (tool, {}).status, 2);
   EXPECT_EQ (runTool (tool, {"no_such_scene", "/tmp/x"}).status, 2);
