@@ -625,7 +625,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   {
     // Outlier seeds, tested again (departure, see DetectorParameters::retest_outlier_seeds) on
     // what growth left of them; before the small-plane pass, whose seeds may be as noisy as they.
-    const std::vector<double> band = noiseBands (points, params, patches);
+    std::vector<double> band = noiseBands (points, params, patches);
     for (const auto& seed : outlier_seeds)
     {
       std::vector<std::uint32_t> left;
@@ -649,6 +649,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         labels[i] = static_cast<std::uint32_t> (patches.size ());
       plane.retested = true;
       patches.push_back (std::move (plane));
+      band.push_back (patches.back ().mdp); // as a small-plane seed's: MDP
       ++st.retested_seeds;
     }
   }
