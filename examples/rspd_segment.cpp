@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -66,6 +66,9 @@ const char* const kHelp =
     "  --edge-sides on|off  where two planes meet, a point whose projection onto its plane lies\n"
     "                   beyond the line where they meet leaves it for the other plane or none\n"
     "                   (default on; off = the paper)\n"
+    "  --step-sides on|off  where two parallel planes make a step deeper than their noise bands,\n"
+    "                   a point within the other plane's band goes to it when it holds more of\n"
+    "                   the point's neighbours (default on; off = the paper)\n"
     "  --support on|off last, a point on or beyond its plane's rim, more than 6 times its\n"
     "                   neighbours' spacing from the rest of the plane or more than 2 ahead of\n"
     "                   all of it, and in no other plane's noise band, leaves it; repeated\n"
@@ -114,6 +117,7 @@ struct Options
   bool release = true;
   bool released_planes = true;
   bool edge_sides = true;
+  bool step_sides = true;
   bool support = true;
   bool left_normals = false;
   bool connected_parts = true;
@@ -210,6 +214,8 @@ parseArguments (int argc, char** argv)
       o.released_planes = option.choice ("on", "off");
     else if (arg == "--edge-sides")
       o.edge_sides = option.choice ("on", "off");
+    else if (arg == "--step-sides")
+      o.step_sides = option.choice ("on", "off");
     else if (arg == "--left-normals")
       o.left_normals = option.choice ("trimmed", "pca");
     else if (arg == "--support")
@@ -373,6 +379,7 @@ run (const Options& o)
   seg.setFarMemberRelease (o.release);
   seg.setReleasedPlaneSeeding (o.released_planes);
   seg.setEdgeSides (o.edge_sides);
+  seg.setStepSides (o.step_sides);
   seg.setSupportCheck (o.support);
   seg.setLeftNormalRefit (o.left_normals);
   seg.setConnectedParts (o.connected_parts);
@@ -402,10 +409,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu kept by the small-plane "
        "pass (%zu on the %zu left points' trimmed normals), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu beyond a rim released%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

@@ -45,6 +45,19 @@ distinct (const PlanarPatch& a, const PlanarPatch& b)
 {
   return std::abs (a.normal.dot (b.normal)) < std::min (a.cos_mnd, b.cos_mnd);
 }
+/** Members from the labels, ascending, and each plane's lowest member (the tie-break). */
+void
+rebuildMembers (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatch>& patches)
+{
+  for (auto& patch : patches)
+    patch.members.clear ();
+  for (std::uint32_t i = 0; i < labels.size (); ++i)
+    if (labels[i] != kNoPatch)
+      patches[labels[i]].members.push_back (i);
+  for (auto& patch : patches)
+    if (!patch.members.empty ())
+      patch.first_index = patch.members.front ();
+}
 } // namespace
 
 EdgeSideCounts
@@ -163,17 +176,97 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
     labels[i] = next[k];
   }
   if (changed)
-  {
-    for (auto& patch : patches)
-      patch.members.clear ();
-    for (std::uint32_t i = 0; i < labels.size (); ++i)
-      if (labels[i] != kNoPatch)
-        patches[labels[i]].members.push_back (i);
-    for (auto& patch : patches)
-      if (!patch.members.empty ())
-        patch.first_index = patch.members.front (); // ascending: the lowest member (tie-break)
-  }
+    rebuildMembers (labels, patches);
   return counts;
+}
+
+std::size_t
+settleStepSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+{
+  const auto step = [&] (std::uint32_t a, std::uint32_t b) {
+    return !distinct (patches[a], patches[b]) &&
+           std::abs ((patches[b].center - patches[a].center).dot (patches[a].normal)) > std::max (band[a], band[b]);
+  };
+  // Each plane's step partners: a sample moves only into the band of one of them, which a few
+  // distances tell without reading its neighbours (most samples lie in no other band).
+  constexpr std::size_t kMaxPartnersChecked = 16;
+  std::vector<std::vector<std::uint32_t>> partners (patches.size ());
+  for (std::uint32_t a = 0; a < patches.size (); ++a)
+    for (std::uint32_t b = 0; b < patches.size (); ++b)
+      if (b != a && !patches[a].members.empty () && !patches[b].members.empty () && step (a, b))
+        partners[a].push_back (b);
+  const auto partnerOf = [&partners] (std::uint32_t a, std::uint32_t b) {
+    return std::binary_search (partners[a].begin (), partners[a].end (), b);
+  };
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (labels.size ());
+  std::vector<std::uint32_t> next (labels);
+#pragma omp parallel num_threads(resolveThreads (num_threads))
+  {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> count; // (plane, neighbours in it); k is small
+#pragma omp for schedule(dynamic, 1024)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii)
+    {
+      const std::uint32_t i = static_cast<std::uint32_t> (ii);
+      const std::uint32_t a = labels[i];
+      if (a == kNoPatch || partners[a].empty ())
+        continue;
+      const Eigen::Vector3d p = points.points[i].cast<double> ();
+      const auto relative = [&] (std::uint32_t l) {
+        return std::abs ((p - patches[l].center).dot (patches[l].normal)) / band[l];
+      };
+      if (partners[a].size () <= kMaxPartnersChecked &&
+          std::none_of (partners[a].begin (), partners[a].end (), [&] (std::uint32_t b) { return relative (b) <= 1.0; }))
+        continue;
+      bool near_step = false;
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        near_step = near_step || (labels[j] != a && labels[j] != kNoPatch && partnerOf (a, labels[j]));
+      });
+      if (!near_step)
+        continue;
+      count.clear ();
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        const std::uint32_t b = labels[j];
+        if (b == kNoPatch)
+          return;
+        auto it = std::find_if (count.begin (), count.end (), [b] (const auto& c) { return c.first == b; });
+        if (it == count.end ())
+          count.emplace_back (b, 1);
+        else
+          ++it->second;
+      });
+      std::uint32_t best = a, best_count = 0;
+      for (const auto& c : count)
+        if (c.first == a)
+          best_count = c.second;
+      double best_r = relative (a);
+      for (const auto& c : count)
+      {
+        const std::uint32_t b = c.first;
+        if (b == a || !partnerOf (a, b))
+          continue;
+        const double r = relative (b);
+        // Within b's band, the plane that holds more of the neighbours; ties stay, or go nearer.
+        if (r <= 1.0 && (c.second > best_count ||
+                         (c.second == best_count && best != a && (r < best_r || (r == best_r && b < best)))))
+        {
+          best = b;
+          best_count = c.second;
+          best_r = r;
+        }
+      }
+      next[i] = best;
+    }
+  }
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < labels.size (); ++i)
+    moved += next[i] != labels[i];
+  if (moved > 0)
+  {
+    labels.swap (next);
+    rebuildMembers (labels, patches);
+  }
+  return moved;
 }
 
 } // namespace rspd

@@ -33,6 +33,9 @@ namespace
 /** Robust standard deviations that bound a plane's noise (a Gaussian's 3 σ: 99.7 %). */
 constexpr double kBandSigmas = 3.0;
 
+/** Most passes of the step-side rule (settleStepSides) until no sample moves. */
+constexpr int kStepSidePasses = 8;
+
 /** How far, in neighbourhood radii of the sample (its k-th neighbour's distance) and along the
   * graph path that brought its plane to it, the last assignment may reach from the members growth
   * left. Growth stops where the normals bend, up to one radius short of an edge, and a path over the
@@ -758,6 +761,26 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                               params.num_threads, patches, labels);
     st.edge_moved = c.moved;
     st.edge_released = c.released;
+    patches.erase (std::remove_if (patches.begin (), patches.end (),
+                                   [] (const PlanarPatch& p) { return p.members.empty (); }),
+                   patches.end ());
+  }
+
+  if (params.step_sides && patches.size () >= 2)
+  {
+    labels = labelSamples (points.size (), patches);
+    // Each pass lets the samples whose neighbours the last one moved follow; a majority rule settles
+    // in a few (the facade at σ = 5 cm: 4,104, 875, then 85 over two more); the cap guards a cycle.
+    // Bands are measured again each pass: a plane that held the other's samples had a wider one, which
+    // may have hidden the step (the facade at σ = 5 cm: F1 0.970 with the first pass's bands kept).
+    for (int pass = 0; pass < kStepSidePasses; ++pass)
+    {
+      const std::size_t moved = settleStepSides (points, graph, noiseBands (points, params, patches),
+                                                 params.num_threads, patches, labels);
+      st.step_moved += moved;
+      if (moved == 0)
+        break;
+    }
     patches.erase (std::remove_if (patches.begin (), patches.end (),
                                    [] (const PlanarPatch& p) { return p.members.empty (); }),
                    patches.end ());

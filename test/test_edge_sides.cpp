@@ -1,5 +1,5 @@
 /*
- * Tests of the edge-side rule (departure, settleEdgeSides).
+ * Tests of the edge-side and step-side rules (departures, settleEdgeSides, settleStepSides).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
@@ -166,4 +166,103 @@ TEST (EdgeSides, ResultDoesNotDependOnTheThreadCount)
   EXPECT_EQ (one, two);
   for (std::size_t l = 0; l < 2; ++l)
     EXPECT_EQ (p1[l].members, p2[l].members);
+}
+
+namespace
+{
+/** A wall z = 0 over [0, 1] x [0, 0.4] around a panel over x in [0.4, 0.6] at z = depth, 1 cm grid,
+  * noise 5 mm along z (band 1.5 cm); labelled as if the wall had grown first: the wall (plane 0) holds
+  * its own samples and the panel's within its band, the panel (plane 1) the rest of its own. */
+struct Recess
+{
+  PointSet set;
+  std::vector<bool> in_panel;
+  std::vector<PlanarPatch> planes;
+  std::vector<std::uint32_t> labels;
+};
+
+Recess
+makeRecess (float depth, std::uint32_t seed)
+{
+  Recess r;
+  rspd_test::addRectangle (r.set, {0, 0, 0}, {0.4f, 0, 0}, {0, 0.4f, 0}, 40, 40, 0.005f, seed);
+  r.in_panel.assign (r.set.size (), false);
+  rspd_test::addRectangle (r.set, {0.4f, 0, depth}, {0.2f, 0, 0}, {0, 0.4f, 0}, 20, 40, 0.005f, seed + 1);
+  r.in_panel.resize (r.set.size (), true);
+  rspd_test::addRectangle (r.set, {0.6f, 0, 0}, {0.4f, 0, 0}, {0, 0.4f, 0}, 40, 40, 0.005f, seed + 2);
+  r.in_panel.resize (r.set.size (), false);
+  r.labels.resize (r.set.size ());
+  for (std::size_t i = 0; i < r.set.size (); ++i)
+    r.labels[i] = r.in_panel[i] && std::abs (r.set.points[i].z ()) > 0.015f ? 1 : 0;
+  r.planes = patchesOf (r.labels, {rspd_test::makePatch ({0}, {0, 0, 0}, {0, 0, 1}, 0.015, 0.1),
+                                   rspd_test::makePatch ({1600}, {0, 0, depth}, {0, 0, 1}, 0.015, 0.1)});
+  return r;
+}
+} // namespace
+
+TEST (StepSides, RecessedPanelTakesItsSamplesBackFromTheWall)
+{
+  // 2 cm deep, 1.5 cm bands: the wall holds the panel's samples within 1.5 cm of it (a sixth).
+  Recess r = makeRecess (0.02f, 11);
+  const NeighborGraph g = rspd_test::bruteForceGraph (r.set.points, 12);
+  std::size_t wrong_before = 0, panel_in_both_bands = 0;
+  for (std::size_t i = 0; i < r.set.size (); ++i)
+  {
+    wrong_before += r.labels[i] != (r.in_panel[i] ? 1u : 0u);
+    panel_in_both_bands += r.in_panel[i] && r.labels[i] == 0 && r.set.points[i].z () >= 0.005f;
+  }
+  ASSERT_GT (panel_in_both_bands, 50u);
+  const std::vector<std::uint32_t> before = r.labels;
+
+  // As the detector runs it: passes until none moves a sample (the first leaves clusters of the
+  // wall's samples that hold each other).
+  std::size_t moved = 0, passes = 0;
+  for (std::size_t m = 1; m > 0 && passes < 8; ++passes)
+    moved += m = settleStepSides (r.set, g, {0.015, 0.015}, 1, r.planes, r.labels);
+  EXPECT_LT (passes, 8u);
+  std::size_t wrong_after = 0;
+  for (std::size_t i = 0; i < r.set.size (); ++i)
+  {
+    wrong_after += r.labels[i] != (r.in_panel[i] ? 1u : 0u);
+    if (!r.in_panel[i] && before[i] == 0)
+      EXPECT_EQ (r.labels[i], 0u) << i; // the wall's own samples beside the panel stay
+  }
+  EXPECT_GE (moved, panel_in_both_bands * 9 / 10);
+  EXPECT_LT (wrong_after * 10, wrong_before);
+  for (std::uint32_t l = 0; l < 2; ++l)
+    for (const auto m : r.planes[l].members)
+      EXPECT_EQ (r.labels[m], l);
+}
+
+TEST (StepSides, StepWithinTheBandsIsLeftAlone)
+{
+  // 1 cm deep against 1.5 cm bands: one surface as far as nearness can tell.
+  Recess r = makeRecess (0.01f, 21);
+  const NeighborGraph g = rspd_test::bruteForceGraph (r.set.points, 12);
+  const std::vector<std::uint32_t> before = r.labels;
+  EXPECT_EQ (settleStepSides (r.set, g, {0.015, 0.015}, 1, r.planes, r.labels), 0u);
+  EXPECT_EQ (r.labels, before);
+}
+
+TEST (StepSides, EdgesAreLeftToTheEdgeSideRule)
+{
+  // Planes that meet along a line are not a step.
+  Nose nose = makeNose (9);
+  const NeighborGraph g = rspd_test::bruteForceGraph (nose.set.points, 12);
+  std::vector<std::uint32_t> labels = nearestLabels (nose.set, nose.planes);
+  std::vector<PlanarPatch> patches = patchesOf (labels, nose.planes);
+  const std::vector<std::uint32_t> before = labels;
+  EXPECT_EQ (settleStepSides (nose.set, g, {0.012, 0.012}, 1, patches, labels), 0u);
+  EXPECT_EQ (labels, before);
+}
+
+TEST (StepSides, ResultDoesNotDependOnTheThreadCount)
+{
+  Recess one = makeRecess (0.02f, 31), two = one;
+  const NeighborGraph g = rspd_test::bruteForceGraph (one.set.points, 12);
+  settleStepSides (one.set, g, {0.015, 0.015}, 1, one.planes, one.labels);
+  settleStepSides (two.set, g, {0.015, 0.015}, 2, two.planes, two.labels);
+  EXPECT_EQ (one.labels, two.labels);
+  for (std::size_t l = 0; l < 2; ++l)
+    EXPECT_EQ (one.planes[l].members, two.planes[l].members);
 }

@@ -173,6 +173,23 @@ TEST (Scenario, StaircaseEdgeSamplesKeepToTheirSide)
   EXPECT_EQ (with.score.found, 30);
 }
 
+TEST (Scenario, WindowsRecessedWithinTheFacadesNoiseTakeTheirSamplesBack)
+{
+  // The facade at sigma = 5 cm: the windows lie 20 cm behind the wall, 4 sigma, so the two noise
+  // bands (3 sigma each) overlap, and the wall, grown first, kept up to 30 % of some windows'
+  // samples, scattered over them, and gave others its samples along their rims. Measured: F1 0.909,
+  // 14 of 16 planes, 2 false planes without the step-side rule; 0.982 and 16 with it.
+  pcl::rspd::SceneOptions o;
+  o.noise = 0.05;
+  const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setStepSides (false); };
+  const Detection without = detectScene ("facade", o, true, pcl::rspd::NormalScale::Automatic, off);
+  const Detection with = detectScene ("facade", o);
+  EXPECT_LT (without.score.f1, 0.93);
+  EXPECT_GE (with.score.f1, 0.97);
+  EXPECT_EQ (with.score.found, 16);
+  EXPECT_EQ (with.score.false_planes, 0);
+}
+
 TEST (Scenario, StaircaseWithThePapersSingleSplitMissesRisers)
 {
   // Algorithm 1 alone seeds a riser only where an ε-sample cell holds it without tread: every such

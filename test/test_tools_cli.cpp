@@ -209,6 +209,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_FALSE (room == labels ("r.pcd", "room_release_off.pcd", {"--release=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_sides_on.pcd", {"--edge-sides", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_sides_off.pcd", {"--edge-sides=off"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_steps_on.pcd", {"--step-sides", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));

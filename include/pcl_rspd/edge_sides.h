@@ -1,5 +1,5 @@
 /*
- * pcl_rspd: edge sides — a departure that settles which plane owns the samples where two planes meet.
+ * pcl_rspd: edge and step sides — departures that settle which plane owns the samples where two planes meet.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #pragma once
@@ -47,6 +47,31 @@ struct EdgeSideCounts
   */
 EdgeSideCounts
 settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+
+/** \brief Step sides (departure, DetectorParameters::step_sides): a sample next to a parallel plane
+  * (normals within either plane's MND) offset from its own by more than the wider noise band goes to
+  * it when it lies within that plane's band and that plane holds more of its neighbours than its own.
+  *
+  * Two parallel planes do not meet along a line; they make a step, and where it is shallow against
+  * the noise (a window recessed 20 cm behind a facade scanned at σ = 5 cm) their noise bands overlap.
+  * Growth gives a sample in the overlap to whichever plane reached it first: the wall, grown first,
+  * keeps up to 30 % of a window's samples, scattered over it, and hands the window the wall's noise
+  * along its rim. Within the overlap, distance cannot tell; where the sample lies on the surface can,
+  * and its neighbours' planes say that. Planes offset by less than the wider band are left alone:
+  * one surface in two parts, or a step within noise. One pass, reading the labels before it (the
+  * result does not depend on the thread count); a sample in a cluster of its plane's samples within
+  * the other plane moves on a later pass, once the cluster's rim has.
+  * \param[in] points samples
+  * \param[in] graph k-NN graph
+  * \param[in] band per patch, the distance within which its own samples lie (the noise band)
+  * \param[in] num_threads OpenMP threads (0: default)
+  * \param[in,out] patches members updated (planes kept as they are)
+  * \param[in,out] labels per-sample patch label, updated
+  * \return samples moved
+  */
+std::size_t
+settleStepSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
                  std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
 
 } // namespace rspd

@@ -157,6 +157,13 @@ struct DetectorParameters
     * of the tread's noise above the nose, which puts it in voxels the riser never enters.
     * false = the paper (and the passes before this one). */
   bool edge_sides = true;
+  /** \brief Departure (step sides, see settleStepSides): after the edge sides, a sample that borders
+    * a parallel plane offset from its own by more than the wider noise band goes to it when it lies
+    * within that plane's band and that plane holds more of its neighbours; passes until none moves (at
+    * most 8). Where a step is shallow against the noise, the plane grown first keeps
+    * the samples of the other's noise that its band reaches: a facade at σ = 5 cm kept up to 30 % of
+    * the samples of windows recessed 20 cm. false = the paper (and the passes before this one). */
+  bool step_sides = true;
   /** \brief Departure (plane support, see releaseUnsupportedMembers): last of all, a member on or
     * beyond its plane's rim whose in-plane gap to the rest of the plane is more than
     * kSupportGapRatio times its neighbours' gaps (or with under kMinSupportShare of its neighbours in
@@ -232,6 +239,7 @@ struct DetectorStatistics
   std::size_t bent_planes = 0;       ///< planes added by splitting bent planes at their edge (bent_plane_split)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
+  std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
   std::size_t unsupported = 0;       ///< samples released as beyond their plane's rim (support_check)
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check

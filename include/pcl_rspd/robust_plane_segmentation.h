@@ -116,6 +116,10 @@ struct RobustPlane
   *    another plane leaves its plane when its projection onto it lies beyond the line where the two
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
   *    by the same rule and holds it within its noise band, else for none;
+  *  - step sides (setStepSides(false) for the paper): then a sample next to a parallel plane offset
+  *    by more than both noise bands goes to it when it lies within its band and it holds more of the
+  *    sample's neighbours, until none moves (a window recessed 20 cm behind a wall scanned at
+  *    σ = 5 cm: distance cannot tell where the bands overlap, the neighbours can);
   *  - plane support (setSupportCheck(false) for the paper): last, a member on or beyond its plane's
   *    rim whose in-plane gap to the rest of the plane is more than 6 times its neighbours' gaps, or
   *    which lies ahead of all its plane's neighbours by more than 2 of their gaps (or with under a
@@ -375,6 +379,16 @@ public:
   /** \brief Whether samples beyond the line where their plane meets another leave it. */
   bool
   getEdgeSides () const { return params_.edge_sides; }
+
+  /** \brief Step sides (default true; false = the paper): where two parallel planes make a step
+    * deeper than the wider of their noise bands, a sample of one that lies within the other's band
+    * goes to it when the other holds more of its neighbours (passes until none moves). See pcl::rspd::settleStepSides and
+    * pcl::rspd::DetectorParameters::step_sides. */
+  void
+  setStepSides (bool enable);
+  /** \brief Whether samples nearer a parallel plane across a step go to it. */
+  bool
+  getStepSides () const { return params_.step_sides; }
 
   /** \brief Plane support (default true; false = the paper): last of all, a member on or beyond its
     * plane's rim whose in-plane gap to the plane's nearest other sample is more than 6 times its

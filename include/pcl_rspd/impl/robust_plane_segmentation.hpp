@@ -341,6 +341,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setEdgeSides (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setStepSides (bool enable)
+{
+  params_.step_sides = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setSupportCheck (bool enable)
 {
   params_.support_check = enable;
