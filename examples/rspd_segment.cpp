@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -66,6 +66,10 @@ const char* const kHelp =
     "  --edge-sides on|off  where two planes meet, a point whose projection onto its plane lies\n"
     "                   beyond the line where they meet leaves it for the other plane or none\n"
     "                   (default on; off = the paper)\n"
+    "  --thick-join on|off  the split also joins touching cells that fail only the paper's\n"
+    "                   distance test (T1) and agree on their plane; once growth is stable, what\n"
+    "                   it left of a group seeds a plane if it passes the tests (default on;\n"
+    "                   off = the paper)\n"
     "  --step-sides on|off  where two parallel planes make a step deeper than their noise bands,\n"
     "                   a point within the other plane's band goes to it when it holds more of\n"
     "                   the point's neighbours (default on; off = the paper)\n"
@@ -118,6 +122,7 @@ struct Options
   bool released_planes = true;
   bool edge_sides = true;
   bool step_sides = true;
+  bool thick_join = true;
   bool support = true;
   bool left_normals = false;
   bool connected_parts = true;
@@ -214,6 +219,8 @@ parseArguments (int argc, char** argv)
       o.released_planes = option.choice ("on", "off");
     else if (arg == "--edge-sides")
       o.edge_sides = option.choice ("on", "off");
+    else if (arg == "--thick-join")
+      o.thick_join = option.choice ("on", "off");
     else if (arg == "--step-sides")
       o.step_sides = option.choice ("on", "off");
     else if (arg == "--left-normals")
@@ -380,6 +387,7 @@ run (const Options& o)
   seg.setReleasedPlaneSeeding (o.released_planes);
   seg.setEdgeSides (o.edge_sides);
   seg.setStepSides (o.step_sides);
+  seg.setThickCellJoin (o.thick_join);
   seg.setSupportCheck (o.support);
   seg.setLeftNormalRefit (o.left_normals);
   seg.setConnectedParts (o.connected_parts);
@@ -407,11 +415,11 @@ run (const Options& o)
                  (o.verbose ? std::string () : std::string (" (run with -v for details)")));
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
-  log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu kept by the small-plane "
+  log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
        "pass (%zu on the %zu left points' trimmed normals), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
-       stats.outlier_seeds, stats.retested_seeds, stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
+       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",

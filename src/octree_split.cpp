@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <iterator>
 #include <numeric>
 
@@ -17,12 +18,29 @@ namespace rspd
 {
 namespace
 {
+/** A cell that fails T1 alone (too thick for its extent; T2 and T3 pass, ε inliers) and whose parent
+  * does not: the largest such cells, disjoint (thick-cell join). */
+struct ThickCell
+{
+  Eigen::Vector3d lo;
+  double size;
+  std::vector<std::uint32_t> samples;
+  PlaneEstimate estimate;
+};
+
+/** What one subtree of the split found. */
+struct SplitOutput
+{
+  std::vector<PlanarPatch> patches;
+  std::vector<ThickCell> thick;
+};
+
 class OctreeSplitter
 {
 public:
   OctreeSplitter (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>* subset,
-                  bool retest_rim_cells)
-    : points_ (points), params_ (params), retest_rim_cells_ (retest_rim_cells)
+                  bool retest_rim_cells, bool keep_thick_cells)
+    : points_ (points), params_ (params), retest_rim_cells_ (retest_rim_cells), keep_thick_cells_ (keep_thick_cells)
   {
     if (subset)
       order_ = *subset;
@@ -39,11 +57,11 @@ public:
   /** Algorithm 1 on the slice [begin, end) of order_, cell of corner lo and edge size.
     * Patches found are appended to out in depth-first order. */
   bool
-  detect (std::size_t begin, std::size_t end, const Eigen::Vector3d& lo, double size, int depth,
-          std::vector<PlanarPatch>& out)
+  detect (std::size_t begin, std::size_t end, const Eigen::Vector3d& lo, double size, int depth, SplitOutput& out)
   {
     if (end - begin < params_.min_patch_size)
       return false;
+    const std::size_t thick_before = out.thick.size ();
 
     bool has_planar_patch = false;
     if (depth < params_.max_octree_depth && !allCoincide (begin, end))
@@ -59,7 +77,7 @@ public:
         // Large cells: the children's subtrees are independent (disjoint ranges of order_), so they
         // run as tasks, each into its own list; joining the lists in child order gives exactly the
         // serial result whatever the thread count.
-        std::array<std::vector<PlanarPatch>, 8> child_out;
+        std::array<SplitOutput, 8> child_out;
         std::array<char, 8> child_planar{};
         for (int c = 0; c < 8; ++c)
         {
@@ -70,7 +88,8 @@ public:
         for (int c = 0; c < 8; ++c)
         {
           has_planar_patch = has_planar_patch || child_planar[c];
-          std::move (child_out[c].begin (), child_out[c].end (), std::back_inserter (out));
+          std::move (child_out[c].patches.begin (), child_out[c].patches.end (), std::back_inserter (out.patches));
+          std::move (child_out[c].thick.begin (), child_out[c].thick.end (), std::back_inserter (out.thick));
         }
       }
       else
@@ -96,6 +115,13 @@ public:
           rim_seeds_.fetch_add (1, std::memory_order_relaxed);
       }
     }
+    const bool thick = keep_thick_cells_ && r.verdict == PlanarityVerdict::FailedDistance &&
+                       r.estimate.mnd () < params_.max_normal_deviation && r.outlier_ratio < params_.max_outlier_ratio &&
+                       (1.0 - r.outlier_ratio) * static_cast<double> (samples.size ()) >= static_cast<double> (params_.min_patch_size);
+    if (thick || r.verdict == PlanarityVerdict::Planar)
+      out.thick.erase (out.thick.begin () + thick_before, out.thick.end ()); // the cell holds its subtree's
+    if (thick)
+      out.thick.push_back ({lo, size, samples, r.estimate}); // T2 and T3 pass: planar but for its width
     if (r.verdict != PlanarityVerdict::Planar)
       return false;
     PlanarPatch patch;
@@ -103,7 +129,7 @@ public:
     std::sort (patch.members.begin (), patch.members.end ());
     patch.first_index = patch.members.front ();
     patch.setEstimate (r.estimate);
-    out.push_back (std::move (patch));
+    out.patches.push_back (std::move (patch));
     return true;
   }
 
@@ -163,28 +189,115 @@ private:
   const PointSet& points_;
   const DetectorParameters& params_;
   const bool retest_rim_cells_;
+  const bool keep_thick_cells_;
   std::vector<std::uint32_t> order_;
 };
+/** Thick-cell join (departure, DetectorParameters::join_thick_cells): thick cells whose cubes touch
+  * and whose planes agree (normals within either's MND, each centre within the other's MDP) are
+  * joined, and each group of two or more that passes T1-T3 as a whole becomes a patch. Where noise is
+  * thick against the cells that hold one plane alone (a cube's faces at σ = 3 % of the edge: every
+  * cell that holds one face fails T1, every cell wide enough holds three), no cell seeds; a group of
+  * such cells is as wide as the face. A curved surface's cells agree with their neighbours too, but
+  * their group bends, and T1 fails it again. Groups in order of their first cell (deterministic). */
+std::vector<PlanarPatch>
+joinThickCells (const PointSet& points, const DetectorParameters& params, const std::vector<ThickCell>& thick)
+{
+  const std::size_t count = thick.size ();
+  std::vector<std::uint32_t> parent (count);
+  std::iota (parent.begin (), parent.end (), 0u);
+  const auto find = [&parent] (std::uint32_t x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  const auto touch = [&] (const ThickCell& a, const ThickCell& b) {
+    const double tol = 1e-9 * std::max (a.size, b.size);
+    for (int d = 0; d < 3; ++d)
+      if (a.lo[d] > b.lo[d] + b.size + tol || b.lo[d] > a.lo[d] + a.size + tol)
+        return false;
+    return true;
+  };
+  // T3 across the pair: the share of a's samples within b's MDP, and the reverse. A cell across an
+  // edge has planar-looking noisy normals, but half its samples lie off either face.
+  const auto within = [&] (const ThickCell& a, const ThickCell& b) {
+    std::size_t in = 0;
+    for (const auto i : a.samples)
+      in += std::abs ((points.points[i].cast<double> () - b.estimate.center).dot (b.estimate.normal)) <= b.estimate.mdp ();
+    return static_cast<double> (in) >= (1.0 - params.max_outlier_ratio) * static_cast<double> (a.samples.size ());
+  };
+  const auto agree = [&] (const ThickCell& a, const ThickCell& b) {
+    return std::abs (a.estimate.normal.dot (b.estimate.normal)) >= std::cos (std::max (a.estimate.mnd (), b.estimate.mnd ())) &&
+           within (a, b) && within (b, a);
+  };
+  for (std::uint32_t a = 0; a < count; ++a)
+    for (std::uint32_t b = a + 1; b < count; ++b)
+      if (touch (thick[a], thick[b]) && agree (thick[a], thick[b]))
+      {
+        const std::uint32_t ra = find (a), rb = find (b);
+        if (ra != rb)
+          parent[std::max (ra, rb)] = std::min (ra, rb);
+      }
+  std::vector<PlanarPatch> patches;
+  std::vector<std::vector<std::uint32_t>> groups (count);
+  for (std::uint32_t a = 0; a < count; ++a)
+    groups[find (a)].push_back (a);
+  for (const auto& group : groups)
+  {
+    if (group.size () < 2)
+      continue;
+    std::vector<std::uint32_t> samples;
+    for (const auto c : group)
+      samples.insert (samples.end (), thick[c].samples.begin (), thick[c].samples.end ());
+    std::sort (samples.begin (), samples.end ());
+    PlanarityResult r = robustPlanarityTest (points, samples, params);
+    if (r.verdict != PlanarityVerdict::Planar || !wideEnough (r.estimate, params))
+      continue;
+    PlanarPatch patch;
+    patch.members = std::move (r.inliers);
+    patch.first_index = patch.members.front ();
+    patch.setEstimate (r.estimate);
+    patches.push_back (std::move (patch));
+  }
+  return patches;
+}
 } // namespace
+
+bool
+wideEnough (const PlaneEstimate& estimate, const DetectorParameters& params)
+{
+  return std::atan2 (0.5 * std::min (estimate.width, estimate.length), estimate.mdp ()) > params.min_distance_angle;
+}
 
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats,
-            const std::vector<std::uint32_t>* subset, bool retest_rim_cells, std::size_t* rim_seeds)
+            const std::vector<std::uint32_t>* subset, bool retest_rim_cells, std::size_t* rim_seeds,
+            std::vector<PlanarPatch>* joined_out)
 {
-  std::vector<PlanarPatch> patches;
-  OctreeSplitter splitter (points, params, subset, retest_rim_cells);
+  const bool join = params.join_thick_cells && subset == nullptr;
+  OctreeSplitter splitter (points, params, subset, retest_rim_cells, join);
   if (splitter.size () == 0)
-    return patches;
+    return {};
   Eigen::Vector3d lo;
   double size;
   splitter.rootCell (lo, size);
+  SplitOutput out;
 #pragma omp parallel num_threads(resolveThreads (params.num_threads))
 #pragma omp single
-  splitter.detect (0, splitter.size (), lo, size, 0, patches);
+  splitter.detect (0, splitter.size (), lo, size, 0, out);
+  std::vector<PlanarPatch> patches = std::move (out.patches);
+  std::size_t joined = 0;
+  if (join && out.thick.size () >= 2)
+  {
+    std::vector<PlanarPatch> extra = joinThickCells (points, params, out.thick);
+    joined = extra.size ();
+    std::move (extra.begin (), extra.end (), std::back_inserter (joined_out ? *joined_out : patches));
+  }
   if (stats)
   {
     stats->cells_tested += splitter.cells_tested_;
     stats->seed_patches += patches.size ();
+    if (!joined_out)
+      stats->joined_seeds += joined;
   }
   if (rim_seeds)
     *rim_seeds = splitter.rim_seeds_;

@@ -133,6 +133,38 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const std::vect
   return 2 * inside > seed.members.size ();
 }
 
+/** What growth left of \a samples (those no plane holds), made a plane: at least ε of them that pass
+  * T1-T3 and \a accept (estimate, plane; may mark the plane) and are no band layer (isBandLayer) of
+  * a plane found. The outlier-seed retest and the thick-cell groups seed this way. The plane is
+  * appended to \a patches, \a labels and \a band (its MDP: its members' spread is not known yet).
+  * \return whether a plane was added */
+template <typename Accept> bool
+seedLeftSamples (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                 const std::vector<std::uint32_t>& samples, Accept&& accept, std::vector<PlanarPatch>& patches,
+                 std::vector<double>& band, std::vector<std::uint32_t>& labels)
+{
+  std::vector<std::uint32_t> left;
+  for (const auto i : samples)
+    if (labels[i] == kNoPatch)
+      left.push_back (i);
+  if (left.size () < params.min_patch_size)
+    return false;
+  PlanarityResult test = robustPlanarityTest (points, left, params);
+  if (test.verdict != PlanarityVerdict::Planar)
+    return false;
+  PlanarPatch plane;
+  plane.members = std::move (test.inliers);
+  plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
+  plane.setEstimate (test.estimate);
+  if ((!patches.empty () && isBandLayer (points, graph, patches, band, labels, plane)) || !accept (test.estimate, plane))
+    return false;
+  for (const auto i : plane.members)
+    labels[i] = static_cast<std::uint32_t> (patches.size ());
+  patches.push_back (std::move (plane));
+  band.push_back (patches.back ().mdp);
+  return true;
+}
+
 /** One round of a pass that offers unlabelled samples to planes: sample open[j] joins plane
   * choice[j] (kNoPatch: stays open); the samples left open and their choices are compacted to the
   * front. \return samples that joined a plane */
@@ -609,7 +641,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   const auto t0 = Clock::now ();
 
   // Split (Sec. 3.1).
-  std::vector<PlanarPatch> patches = splitPhase (points, params, &st);
+  std::vector<PlanarPatch> joined; // groups of thick cells (join_thick_cells): seeds once growth is stable
+  std::vector<PlanarPatch> patches = splitPhase (points, params, &st, nullptr, false, nullptr, &joined);
   std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
   std::vector<PlanarPatch> outlier_seeds;
   if (params.drop_outlier_seeds && patches.size () >= 3)
@@ -624,37 +657,32 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   std::vector<std::uint8_t> flags (points.size (), 0); // see SampleFlag
   growMergeUntilStable (points, graph, params, patches, labels, flags, st);
 
+  if (!joined.empty ())
+  {
+    // Groups of thick cells (departure, see DetectorParameters::join_thick_cells), on what growth
+    // left of them: a group is noisier than the cells seeded, and seeded with them it competed with
+    // their growth (synpeb_pc01 0.9149 -> 0.9115, one more fragment, and rotations moved it by 0.008).
+    std::vector<double> band = noiseBands (points, params, patches);
+    std::size_t seeded = 0;
+    const auto wide = [&] (const PlaneEstimate& e, PlanarPatch&) { return wideEnough (e, params); };
+    for (const auto& group : joined)
+      seeded += seedLeftSamples (points, graph, params, group.members, wide, patches, band, labels);
+    st.joined_seeds = seeded;
+    if (seeded > 0)
+      growMergeUntilStable (points, graph, params, patches, labels, flags, st);
+  }
+
   if (!outlier_seeds.empty () && !patches.empty ())
   {
     // Outlier seeds, tested again (departure, see DetectorParameters::retest_outlier_seeds) on
     // what growth left of them; before the small-plane pass, whose seeds may be as noisy as they.
     std::vector<double> band = noiseBands (points, params, patches);
+    const auto flat = [&] (const PlaneEstimate&, PlanarPatch& plane) {
+      plane.retested = true; // judged again once grown
+      return flatPatch (points, params, plane, false);
+    };
     for (const auto& seed : outlier_seeds)
-    {
-      std::vector<std::uint32_t> left;
-      for (const auto i : seed.members)
-        if (labels[i] == kNoPatch)
-          left.push_back (i);
-      if (left.size () < params.min_patch_size)
-        continue;
-      PlanarityResult test = robustPlanarityTest (points, left, params);
-      if (test.verdict != PlanarityVerdict::Planar)
-        continue;
-      PlanarPatch plane;
-      plane.members = std::move (test.inliers);
-      plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
-      plane.setEstimate (test.estimate);
-      if (isBandLayer (points, graph, patches, band, labels, plane))
-        continue;
-      if (!flatPatch (points, params, plane, false))
-        continue;
-      for (const auto i : plane.members)
-        labels[i] = static_cast<std::uint32_t> (patches.size ());
-      plane.retested = true;
-      patches.push_back (std::move (plane));
-      band.push_back (patches.back ().mdp); // as a small-plane seed's: MDP
-      ++st.retested_seeds;
-    }
+      st.retested_seeds += seedLeftSamples (points, graph, params, seed.members, flat, patches, band, labels);
   }
   if (params.small_cell_size > 0 && params.small_cell_size < params.min_patch_size && !patches.empty ())
   {

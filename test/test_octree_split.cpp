@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <numeric>
 #include <set>
 
@@ -186,4 +188,86 @@ TEST (OctreeSplit, RimCellIsTestedAgainOnItsInliersOnlyWhenAsked)
   for (const auto i : seeds[0].members)
     EXPECT_GE (s.points[i].x (), 1.0f / 3.0f) << "a bent-normal sample seeded";
   EXPECT_LT (seeds[0].mnd, 0.2);
+}
+
+namespace
+{
+/** A unit cube's six faces, 50 x 50 samples each, noise σ = 3 % of the edge along each face's
+  * normal; face f holds samples [2500 f, 2500 (f + 1)). */
+PointSet
+noisyCube ()
+{
+  PointSet s;
+  const float h = 0.5f;
+  std::uint32_t seed = 40;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const float side : {-h, h})
+    {
+      Eigen::Vector3f o = Eigen::Vector3f::Constant (-h), a = Eigen::Vector3f::Zero (), b = Eigen::Vector3f::Zero ();
+      o[axis] = side;
+      a[(axis + 1) % 3] = 1.0f;
+      b[(axis + 2) % 3] = 1.0f;
+      rspd_test::addRectangle (s, o, a, b, 50, 50, 0.03f, ++seed);
+    }
+  return s;
+}
+} // namespace
+
+TEST (OctreeSplit, ThickCellsOfOneFaceAreJoinedIntoItsSeed)
+{
+  // Every cell that holds one face alone is too thin for T1 against σ = 3 cm (the paper seeds
+  // nothing); cells across an edge look planar to T2 and T3 too, but are not joined to a face
+  // (half their samples lie off it) and their strips along an edge are narrow.
+  const PointSet s = noisyCube ();
+  DetectorParameters p = params (100);
+  p.join_thick_cells = false;
+  EXPECT_TRUE (splitPhase (s, p).empty ());
+
+  p.join_thick_cells = true;
+  DetectorStatistics st;
+  const auto seeds = splitPhase (s, p, &st);
+  ASSERT_EQ (seeds.size (), 6u);
+  EXPECT_EQ (st.joined_seeds, 6u);
+  std::set<std::uint32_t> faces, seen;
+  for (const auto& seed : seeds)
+  {
+    for (const auto i : seed.members)
+      EXPECT_TRUE (seen.insert (i).second) << "sample " << i << " in two seeds";
+    std::array<std::size_t, 6> on{};
+    for (const auto i : seed.members)
+      ++on[i / 2500];
+    const auto face = std::max_element (on.begin (), on.end ()) - on.begin ();
+    faces.insert (static_cast<std::uint32_t> (face));
+    EXPECT_GE (on[face], seed.members.size () * 95 / 100);
+    EXPECT_GE (on[face], 2500u / 4); // the cells away from its rim
+  }
+  EXPECT_EQ (faces.size (), 6u);
+}
+
+TEST (OctreeSplit, ThickCellsAreNotJoinedInTheSmallCellPass)
+{
+  // The join is part of the first split only: a subset split (the small-cell pass) is the paper's.
+  const PointSet s = noisyCube ();
+  std::vector<std::uint32_t> all (s.size ());
+  std::iota (all.begin (), all.end (), 0u);
+  EXPECT_TRUE (splitPhase (s, params (100), nullptr, &all).empty ());
+}
+
+TEST (OctreeSplit, CellThatPassesHoldsItsThickCells)
+{
+  // Floor and ceiling 1 x 1, 1 apart, σ = 2 cm: the ε-sample cells (a quarter of a quarter) are too
+  // thin for T1, their parents (a quarter of a plane, 40 cm in-plane against ~5 cm MDP) are not. A
+  // parent's patch holds its thick cells' samples, which must not seed again (a sample in two seeds).
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.02f, 60);
+  rspd_test::addRectangle (s, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.02f, 61);
+  DetectorStatistics st;
+  const auto seeds = splitPhase (s, params (100), &st);
+  EXPECT_EQ (seeds.size (), 8u);
+  EXPECT_EQ (st.joined_seeds, 0u);
+  std::set<std::uint32_t> seen;
+  for (const auto& seed : seeds)
+    for (const auto i : seed.members)
+      EXPECT_TRUE (seen.insert (i).second) << "sample " << i << " in two seeds";
+  EXPECT_GE (seen.size (), s.size () * 9 / 10);
 }

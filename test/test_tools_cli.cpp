@@ -167,11 +167,14 @@ TEST (SegmentCli, NormalScaleOption)
   ASSERT_EQ (runTool (make, {"cube", dir.file ("c"), "-n", "30000", "--noise", "0.03"}).status, 0);
   ASSERT_EQ (runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("default.pcd")}).status, 0);
   ASSERT_EQ (runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("fixed.pcd"), "--normal-scale", "fixed"}).status, 0);
-  EXPECT_TRUE (rspd_test::fileText (dir.file ("default.pcd")) == rspd_test::fileText (dir.file ("fixed.pcd")));
+  // At σ = 3 % of the edge no k-neighbourhood resolves a surface: the automatic scale widens them,
+  // and groups of thick cells seed the faces (6 planes); on the k-scale normals T2 fails everywhere.
+  EXPECT_FALSE (rspd_test::fileText (dir.file ("default.pcd")) == rspd_test::fileText (dir.file ("fixed.pcd")));
   const auto r = runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("adaptive.pcd"), "--normal-scale=adaptive", "-v"});
   ASSERT_EQ (r.status, 0) << r.err;
   EXPECT_NE (r.err.find ("normal scales:"), std::string::npos) << r.err;
   ASSERT_EQ (runTool (segment, {dir.file ("c.pcd"), "-o", dir.file ("auto.pcd"), "--normal-scale", "auto"}).status, 0);
+  EXPECT_TRUE (rspd_test::fileText (dir.file ("default.pcd")) == rspd_test::fileText (dir.file ("auto.pcd")));
   EXPECT_EQ (runTool (segment, {dir.file ("c.pcd"), "--normal-scale", "wide"}).status, 2);
   EXPECT_EQ (runTool (segment, {dir.file ("c.pcd"), "--normal-scale"}).status, 2);
 }
@@ -210,6 +213,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_sides_on.pcd", {"--edge-sides", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_sides_off.pcd", {"--edge-sides=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_steps_on.pcd", {"--step-sides", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_thick_on.pcd", {"--thick-join", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));

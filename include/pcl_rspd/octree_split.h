@@ -34,12 +34,24 @@ namespace rspd
   *            inliers, which seed a patch if they pass (DetectorParameters::rim_cell_retest; the
   *            small-cell pass only, false = the paper)
   * \param[out] rim_seeds patches found that way are counted here (may be null)
+  * \param[out] joined_out with params.join_thick_cells, on the whole cloud (no subset): the groups
+  *            of thick cells that pass T1-T3 and wideEnough go here (null: they are appended to the
+  *            patches, after the cells' own, and counted in stats->joined_seeds). Thick cells are
+  *            the largest cells that fail T1 alone (T2 and T3 pass, ε inliers); touching ones join
+  *            when their planes agree (normals within either's MND, at least 1 - T3's share of
+  *            each one's samples within the other's MDP).
   * \return the patches, in depth-first octree order (deterministic)
   */
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr,
             const std::vector<std::uint32_t>* subset = nullptr, bool retest_rim_cells = false,
-            std::size_t* rim_seeds = nullptr);
+            std::size_t* rim_seeds = nullptr, std::vector<PlanarPatch>* joined_out = nullptr);
+
+/** \brief T1 (Sec. 3.2) on the narrower in-plane extent: atan2(½·min(w, l), MDP) above the
+  * threshold. A group of thick cells failed T1 for want of width; a strip of them along an edge
+  * (half on either face, normals bent towards the other) is long but narrow, and no plane. */
+bool
+wideEnough (const PlaneEstimate& estimate, const DetectorParameters& params);
 
 } // namespace rspd
 } // namespace pcl

@@ -157,6 +157,13 @@ struct DetectorParameters
     * of the tread's noise above the nose, which puts it in voxels the riser never enters.
     * false = the paper (and the passes before this one). */
   bool edge_sides = true;
+  /** \brief Departure (thick-cell join, see splitPhase): the split also keeps the largest cells that
+    * fail T1 alone (too thick for their extent, planar by T2 and T3) and joins those whose cubes touch
+    * and whose planes agree; once growth is stable, what it left of each group of two or more seeds
+    * a plane if it passes T1-T3, T1 on its narrower extent too (wideEnough), and is no noise-band
+    * layer of a plane found. Where the noise is thick against every cell that holds one plane alone,
+    * the paper seeds nothing (a cube at σ = 3 % of its edge: 0 of 6 planes). false = the paper. */
+  bool join_thick_cells = true;
   /** \brief Departure (step sides, see settleStepSides): after the edge sides, a sample that borders
     * a parallel plane offset from its own by more than the wider noise band goes to it when it lies
     * within that plane's band and that plane holds more of its neighbours; passes until none moves (at
@@ -223,6 +230,7 @@ struct DetectorStatistics
 {
   std::size_t cells_tested = 0;      ///< planarity tests run during the split
   std::size_t seed_patches = 0;      ///< patches the split produced
+  std::size_t joined_seeds = 0;      ///< planes seeded by groups of thick cells once growth is stable (join_thick_cells)
   std::size_t outlier_seeds = 0;     ///< seeds dropped as MND outliers
   std::size_t retested_seeds = 0;    ///< of those, seeded again from what growth left (retest_outlier_seeds)
   int iterations = 0;                ///< grow-merge iterations

@@ -116,6 +116,10 @@ struct RobustPlane
   *    another plane leaves its plane when its projection onto it lies beyond the line where the two
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
   *    by the same rule and holds it within its noise band, else for none;
+  *  - thick-cell join (setThickCellJoin(false) for the paper): the split also joins touching cells
+  *    that fail T1 alone and agree on their plane; once growth is stable, what it left of each group
+  *    seeds a plane if it passes T1-T3 (a cube at σ = 3 % of its edge: no cell holding one face is
+  *    wide enough for T1);
   *  - step sides (setStepSides(false) for the paper): then a sample next to a parallel plane offset
   *    by more than both noise bands goes to it when it lies within its band and it holds more of the
   *    sample's neighbours, until none moves (a window recessed 20 cm behind a wall scanned at
@@ -379,6 +383,16 @@ public:
   /** \brief Whether samples beyond the line where their plane meets another leave it. */
   bool
   getEdgeSides () const { return params_.edge_sides; }
+
+  /** \brief Thick-cell join (default true; false = the paper): the split also keeps the largest
+    * cells that fail T1 alone (too thick for their extent, planar by T2 and T3), joins touching ones
+    * whose planes agree, and seeds a patch from each group that passes T1-T3 as a whole. See
+    * pcl::rspd::DetectorParameters::join_thick_cells. */
+  void
+  setThickCellJoin (bool enable);
+  /** \brief Whether groups of thick cells may seed patches. */
+  bool
+  getThickCellJoin () const { return params_.join_thick_cells; }
 
   /** \brief Step sides (default true; false = the paper): where two parallel planes make a step
     * deeper than the wider of their noise bands, a sample of one that lies within the other's band

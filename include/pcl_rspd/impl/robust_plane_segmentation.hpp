@@ -341,6 +341,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setEdgeSides (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setThickCellJoin (bool enable)
+{
+  params_.join_thick_cells = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setStepSides (bool enable)
 {
   params_.step_sides = enable;
