@@ -2,6 +2,7 @@
  * pcl_rspd: the split phase (Sec. 3.1, Algorithm 1).
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <pcl_rspd/bent_planes.h>
 #include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/octree_split.h>
 
@@ -250,7 +251,7 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
       samples.insert (samples.end (), thick[c].samples.begin (), thick[c].samples.end ());
     std::sort (samples.begin (), samples.end ());
     PlanarityResult r = robustPlanarityTest (points, samples, params);
-    if (r.verdict != PlanarityVerdict::Planar || !wideEnough (r.estimate, params))
+    if (r.verdict != PlanarityVerdict::Planar || bentAtAnEdge (points, r.inliers, params))
       continue;
     PlanarPatch patch;
     patch.members = std::move (r.inliers);
@@ -263,9 +264,11 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
 } // namespace
 
 bool
-wideEnough (const PlaneEstimate& estimate, const DetectorParameters& params)
+bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params)
 {
-  return std::atan2 (0.5 * std::min (estimate.width, estimate.length), estimate.mdp ()) > params.min_distance_angle;
+  HingeFit fit;
+  return fitHinge (points, samples, fit) && fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma &&
+         fit.angle > 0.5 * M_PI - params.min_distance_angle;
 }
 
 std::vector<PlanarPatch>

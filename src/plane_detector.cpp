@@ -664,9 +664,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // their growth (synpeb_pc01 0.9149 -> 0.9115, one more fragment, and rotations moved it by 0.008).
     std::vector<double> band = noiseBands (points, params, patches);
     std::size_t seeded = 0;
-    const auto wide = [&] (const PlaneEstimate& e, PlanarPatch&) { return wideEnough (e, params); };
+    const auto unbent = [&] (const PlaneEstimate&, PlanarPatch& plane) {
+      plane.joined = true;
+      plane.retested = true;
+      return !bentAtAnEdge (points, plane.members, params) && flatPatch (points, params, plane, false);
+    };
     for (const auto& group : joined)
-      seeded += seedLeftSamples (points, graph, params, group.members, wide, patches, band, labels);
+      seeded += seedLeftSamples (points, graph, params, group.members, unbent, patches, band, labels);
     st.joined_seeds = seeded;
     if (seeded > 0)
       growMergeUntilStable (points, graph, params, patches, labels, flags, st);
@@ -691,7 +695,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // The noisiest plane grown, and the noisiest outlier seed seeded again (not grown yet).
     double max_mnd = 0.0, max_retested_mnd = 0.0;
     for (const auto& p : patches)
-      (p.retested ? max_retested_mnd : max_mnd) = std::max (p.retested ? max_retested_mnd : max_mnd, p.mnd);
+    {
+      // A noisy seed's plane (retested, or a thick-cell group) lets in only seeds as flat as it.
+      double& bound = p.retested || p.joined ? max_retested_mnd : max_mnd;
+      bound = std::max (bound, p.mnd);
+    }
     std::vector<double> band = noiseBands (points, params, patches);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
@@ -735,11 +743,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                    [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
                    patches.end ());
   }
-  if (st.retested_seeds > 0)
+  if (st.retested_seeds > 0 || st.joined_seeds > 0)
   {
-    // A plane an outlier seed seeded again: grown, it has the samples its seed may have lacked to
-    // show a bend, and it must still be flat (at 10,000 points a pipe is sampled a few times
-    // around, and its facets' seeds are too small to tell).
+    // A plane an outlier seed or a group of thick cells seeded: grown, it has the samples its seed
+    // may have lacked to show a bend, and it must still be flat (at 10,000 points a pipe is sampled
+    // a few times around, and its facets' seeds are too small to tell).
     patches.erase (std::remove_if (patches.begin (), patches.end (),
                                    [&] (const PlanarPatch& p) { return p.retested && !flatPatch (points, params, p, true); }),
                    patches.end ());

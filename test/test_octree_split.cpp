@@ -217,7 +217,7 @@ TEST (OctreeSplit, ThickCellsOfOneFaceAreJoinedIntoItsSeed)
 {
   // Every cell that holds one face alone is too thin for T1 against σ = 3 cm (the paper seeds
   // nothing); cells across an edge look planar to T2 and T3 too, but are not joined to a face
-  // (half their samples lie off it) and their strips along an edge are narrow.
+  // (half their samples lie off it), and a strip of them along an edge is bent at it.
   const PointSet s = noisyCube ();
   DetectorParameters p = params (100);
   p.join_thick_cells = false;

@@ -56,6 +56,9 @@ struct PlanarPatch
     * small-plane seed as noisy, which only such a seed lets in; kept by a merge where it is the
     * larger part. Such a plane is judged flat again once grown. */
   bool retested = false;
+  /** Seeded by a group of thick cells (DetectorParameters::join_thick_cells): noisy by nature, its
+    * MND lets only flat seeds of the small-plane pass in, as a retested plane's does. */
+  bool joined = false;
 
   /** \brief Take C, N, MDP and MND from \a estimate, and remember the current size as estimated. */
   void

@@ -160,7 +160,8 @@ struct DetectorParameters
   /** \brief Departure (thick-cell join, see splitPhase): the split also keeps the largest cells that
     * fail T1 alone (too thick for their extent, planar by T2 and T3) and joins those whose cubes touch
     * and whose planes agree; once growth is stable, what it left of each group of two or more seeds
-    * a plane if it passes T1-T3, T1 on its narrower extent too (wideEnough), and is no noise-band
+    * a plane if it passes T1-T3, two planes meeting at an edge do not explain it (bentAtAnEdge: a
+    * strip of cells along a noisy cube's edge), and it is no noise-band
     * layer of a plane found. Where the noise is thick against every cell that holds one plane alone,
     * the paper seeds nothing (a cube at σ = 3 % of its edge: 0 of 6 planes). false = the paper. */
   bool join_thick_cells = true;
