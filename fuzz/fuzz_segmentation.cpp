@@ -22,7 +22,8 @@
  *        or Automatic with b9 & 16); b9 & 32: setCoplanarMerge (false), setDropOutlierSeeds (false),
  *        setDetectionFrame (InputAxes), setNormalFit (Pca), setRimCellRetest (false) and
  *        setFarMemberRelease (false), setEdgeSides (false), setConnectedParts (false),
- *        setBentPlaneSplit (false), setReleasedPlaneSeeding (false), setSupportCheck (false);
+ *        setBentPlaneSplit (false), setReleasedPlaneSeeding (false), setSupportCheck (false),
+ *        setStepSides (false), setThickCellJoin (false);
  *        b9 & 64: setCurvedPlaneCheck (true) and setNormalFit (TrimmedPlane); b9 & 128: setFinalAssignment (All;
  *        None with b9 & 32, else Edges with b9 & 64; the default is Tails); b9 & 16 without b9 & 64:
  *        setLeftNormalRefit (true)
@@ -245,6 +246,8 @@ configure (Seg& seg, int k, std::uint8_t flags, std::uint8_t b8, std::uint8_t or
     seg.setBentPlaneSplit (false);
     seg.setReleasedPlaneSeeding (false);
     seg.setSupportCheck (false);
+    seg.setStepSides (false);
+    seg.setThickCellJoin (false);
   }
   if (origin_code & 64)
   {
