@@ -190,6 +190,19 @@ fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, Hin
   return true;
 }
 
+bool
+isBend (const HingeFit& fit, const DetectorParameters& params)
+{
+  return fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma && fit.angle > 0.5 * M_PI - params.min_distance_angle;
+}
+
+bool
+bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params)
+{
+  HingeFit fit;
+  return fitHinge (points, samples, fit) && isBend (fit, params);
+}
+
 namespace
 {
 /** The leaves of \a members split at edges (see splitBentPlanes), appended to \a leaves; false, and
@@ -200,9 +213,7 @@ splitAtEdges (const PointSet& points, const DetectorParameters& params, const st
 {
   HingeFit fit;
   if (level >= kMaxLevels || members.size () < 2 * params.min_patch_size || !fitHinge (points, members, fit) ||
-      !(fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma) ||
-      !(fit.angle > 0.5 * M_PI - params.min_distance_angle) || fit.parts[0].size () < params.min_patch_size ||
-      fit.parts[1].size () < params.min_patch_size)
+      !isBend (fit, params) || fit.parts[0].size () < params.min_patch_size || fit.parts[1].size () < params.min_patch_size)
     return false;
   std::vector<std::vector<std::uint32_t>> found;
   for (auto& side : fit.parts)

@@ -218,12 +218,6 @@ settleStepSides (const PointSet& points, const NeighborGraph& graph, const std::
       if (partners[a].size () <= kMaxPartnersChecked &&
           std::none_of (partners[a].begin (), partners[a].end (), [&] (std::uint32_t b) { return relative (b) <= 1.0; }))
         continue;
-      bool near_step = false;
-      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
-        near_step = near_step || (labels[j] != a && labels[j] != kNoPatch && partnerOf (a, labels[j]));
-      });
-      if (!near_step)
-        continue;
       count.clear ();
       graph.forEachNeighbor (i, [&] (std::uint32_t j) {
         const std::uint32_t b = labels[j];

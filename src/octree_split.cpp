@@ -194,12 +194,12 @@ private:
   std::vector<std::uint32_t> order_;
 };
 /** Thick-cell join (departure, DetectorParameters::join_thick_cells): thick cells whose cubes touch
-  * and whose planes agree (normals within either's MND, each centre within the other's MDP) are
-  * joined, and each group of two or more that passes T1-T3 as a whole becomes a patch. Where noise is
-  * thick against the cells that hold one plane alone (a cube's faces at σ = 3 % of the edge: every
-  * cell that holds one face fails T1, every cell wide enough holds three), no cell seeds; a group of
-  * such cells is as wide as the face. A curved surface's cells agree with their neighbours too, but
-  * their group bends, and T1 fails it again. Groups in order of their first cell (deterministic). */
+  * and whose planes agree (normals within either's MND, at least 1 - T3's share of each one's
+  * samples within the other's MDP) are joined, and each group of two or more that passes T1-T3 as a
+  * whole and is not bentAtAnEdge becomes a seed. Where noise is thick against the cells that hold
+  * one plane alone (a cube's faces at σ = 3 % of the edge: every cell that holds one face fails T1,
+  * every cell wide enough holds three), no cell seeds; a group of such cells is as wide as the face.
+  * Groups in order of their first cell (deterministic). */
 std::vector<PlanarPatch>
 joinThickCells (const PointSet& points, const DetectorParameters& params, const std::vector<ThickCell>& thick)
 {
@@ -262,14 +262,6 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
   return patches;
 }
 } // namespace
-
-bool
-bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params)
-{
-  HingeFit fit;
-  return fitHinge (points, samples, fit) && fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma &&
-         fit.angle > 0.5 * M_PI - params.min_distance_angle;
-}
 
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats,

@@ -134,7 +134,7 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const std::vect
 }
 
 /** What growth left of \a samples (those no plane holds), made a plane: at least ε of them that pass
-  * T1-T3 and \a accept (estimate, plane; may mark the plane) and are no band layer (isBandLayer) of
+  * T1-T3 and \a accept (the plane; may mark it) and are no band layer (isBandLayer) of
   * a plane found. The outlier-seed retest and the thick-cell groups seed this way. The plane is
   * appended to \a patches, \a labels and \a band (its MDP: its members' spread is not known yet).
   * \return whether a plane was added */
@@ -156,7 +156,7 @@ seedLeftSamples (const PointSet& points, const NeighborGraph& graph, const Detec
   plane.members = std::move (test.inliers);
   plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
   plane.setEstimate (test.estimate);
-  if ((!patches.empty () && isBandLayer (points, graph, patches, band, labels, plane)) || !accept (test.estimate, plane))
+  if ((!patches.empty () && isBandLayer (points, graph, patches, band, labels, plane)) || !accept (plane))
     return false;
   for (const auto i : plane.members)
     labels[i] = static_cast<std::uint32_t> (patches.size ());
@@ -664,7 +664,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // their growth (synpeb_pc01 0.9149 -> 0.9115, one more fragment, and rotations moved it by 0.008).
     std::vector<double> band = noiseBands (points, params, patches);
     std::size_t seeded = 0;
-    const auto unbent = [&] (const PlaneEstimate&, PlanarPatch& plane) {
+    const auto unbent = [&] (PlanarPatch& plane) {
       plane.joined = true;
       plane.retested = true;
       return !bentAtAnEdge (points, plane.members, params) && flatPatch (points, params, plane, false);
@@ -681,7 +681,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // Outlier seeds, tested again (departure, see DetectorParameters::retest_outlier_seeds) on
     // what growth left of them; before the small-plane pass, whose seeds may be as noisy as they.
     std::vector<double> band = noiseBands (points, params, patches);
-    const auto flat = [&] (const PlaneEstimate&, PlanarPatch& plane) {
+    const auto flat = [&] (PlanarPatch& plane) {
       plane.retested = true; // judged again once grown
       return flatPatch (points, params, plane, false);
     };
@@ -692,7 +692,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   {
     // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
     // (left_normal_refit) on the trimmed normals of the samples still left.
-    // The noisiest plane grown, and the noisiest outlier seed seeded again (not grown yet).
+    // The noisiest plane grown, and the noisiest plane a noisy seed seeded (a retested outlier
+    // seed, not grown yet, or a thick-cell group).
     double max_mnd = 0.0, max_retested_mnd = 0.0;
     for (const auto& p : patches)
     {

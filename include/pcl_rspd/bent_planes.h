@@ -40,6 +40,18 @@ struct HingeFit
 bool
 fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, HingeFit& fit);
 
+/** \brief Whether \a fit is a bend, as splitBentPlanes judges one: the two sides' planes lower the
+  * robust σ to at most DetectorParameters::bent_sigma_ratio of the one plane's, and they meet at more
+  * than 90° minus T1's angle. */
+bool
+isBend (const HingeFit& fit, const DetectorParameters& params);
+
+/** \brief Whether two planes meeting at an edge explain \a samples (fitHinge, then isBend). A group
+  * of thick cells along a noisy cube's edge (half on either face, each half's normals bent towards
+  * the other) passes T1-T3 as a long strip; a riser as narrow is flat. */
+bool
+bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params);
+
 /** \brief Bent planes (departure, DetectorParameters::bent_plane_split): split every plane whose
   * members lie on two planes meeting at an edge, and each part again (at most three levels).
   *

@@ -35,7 +35,7 @@ namespace rspd
   *            small-cell pass only, false = the paper)
   * \param[out] rim_seeds patches found that way are counted here (may be null)
   * \param[out] joined_out with params.join_thick_cells, on the whole cloud (no subset): the groups
-  *            of thick cells that pass T1-T3 and are not bentAtAnEdge go here (null: they are appended to the
+  *            of thick cells that pass T1-T3 and are not bentAtAnEdge (bent_planes.h) go here (null: they are appended to the
   *            patches, after the cells' own, and counted in stats->joined_seeds). Thick cells are
   *            the largest cells that fail T1 alone (T2 and T3 pass, ε inliers); touching ones join
   *            when their planes agree (normals within either's MND, at least 1 - T3's share of
@@ -46,14 +46,6 @@ std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr,
             const std::vector<std::uint32_t>* subset = nullptr, bool retest_rim_cells = false,
             std::size_t* rim_seeds = nullptr, std::vector<PlanarPatch>* joined_out = nullptr);
-
-/** \brief Whether two planes meeting at an edge explain \a samples (fitHinge: the robust σ falls to
-  * at most DetectorParameters::bent_sigma_ratio of one plane's, and they meet at more than 90° minus
-  * T1's angle), as the bent-plane split judges a plane. A group of thick cells along a noisy cube's
-  * edge (half on either face, each half's normals bent towards the other) passes T1-T3 as a long
-  * strip; a riser as narrow is flat. */
-bool
-bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params);
 
 } // namespace rspd
 } // namespace pcl
