@@ -2,6 +2,7 @@
  * pcl_rspd: the pipeline of Sec. 3 — split, then grow and merge until every patch is stable.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <pcl_rspd/band_layers.h>
 #include <pcl_rspd/bent_planes.h>
 #include <pcl_rspd/connected_parts.h>
 #include <pcl_rspd/edge_sides.h>
@@ -111,28 +112,6 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
   return updated;
 }
 
-/** Small-plane pass: whether more than half the members of \a seed lie within the noise band
-  * (\a band) of a plane one of their graph neighbours holds. Such a seed is a layer of a plane
-  * already found, not a new one: the samples between a door 2 cm proud of its wall and the wall,
-  * or a second copy of a small plane's own noise rim. */
-bool
-isBandLayer (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
-             const std::vector<double>& band, const std::vector<std::uint32_t>& labels, const PlanarPatch& seed)
-{
-  std::size_t inside = 0;
-  for (const auto i : seed.members)
-  {
-    const Eigen::Vector3d p = points.points[i].cast<double> ();
-    bool in = false;
-    graph.forEachNeighbor (i, [&] (std::uint32_t m) {
-      const std::uint32_t o = labels[m];
-      in = in || (o != kNoPatch && std::abs ((p - patches[o].center).dot (patches[o].normal)) <= band[o]);
-    });
-    inside += in;
-  }
-  return 2 * inside > seed.members.size ();
-}
-
 /** What growth left of \a samples (those no plane holds), made a plane: at least ε of them that pass
   * T1-T3 and \a accept (the plane; may mark it) and are no band layer (isBandLayer) of
   * a plane found. The outlier-seed retest and the thick-cell groups seed this way. The plane is
@@ -156,7 +135,7 @@ seedLeftSamples (const PointSet& points, const NeighborGraph& graph, const Detec
   plane.members = std::move (test.inliers);
   plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
   plane.setEstimate (test.estimate);
-  if ((!patches.empty () && isBandLayer (points, graph, patches, band, labels, plane)) || !accept (plane))
+  if ((!patches.empty () && isBandLayer (points, graph, params, patches, band, labels, plane)) || !accept (plane))
     return false;
   for (const auto i : plane.members)
     labels[i] = static_cast<std::uint32_t> (patches.size ());
@@ -725,11 +704,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       {
         if (seed.mnd > max_mnd && (seed.mnd > max_retested_mnd || !flatPatch (round_points, params, seed, false)))
           continue; // noisier than every plane found: an edge band of bent normals, not a plane
-        if (isBandLayer (round_points, graph, patches, band, labels, seed))
+        bool beside = false;
+        if (isBandLayer (round_points, graph, params, patches, band, labels, seed, &beside))
           continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate
         for (const auto i : seed.members)
           labels[i] = static_cast<std::uint32_t> (patches.size ());
         seed.retested = seed.mnd > max_mnd; // let in by a retested seed: judged again once grown
+        st.small_seeds_beside += beside;
         patches.push_back (std::move (seed));
         band.push_back (patches.back ().mdp); // its members' spread is not known yet: MDP
         ++st.small_seeds;

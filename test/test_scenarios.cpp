@@ -659,10 +659,13 @@ TEST (SharedData, SynPebPc01)
   // connected-parts split keeps them two planes (0.730 -> 0.828, 37 -> 38 found, measured). Its
   // boxes' faces (1-2 cm noise on 0.3-0.7 m faces) give PCA normals so noisy that MND reaches 30-70
   // degrees: growth carries a plane over edges of 19-42 degrees onto the next face, and only the
-  // bent-plane split separates them (0.828 -> 0.909, 38 -> 51 found, measured).
+  // bent-plane split separates them (0.828 -> 0.909, 38 -> 51 found, measured). Such a plane's band
+  // also covered the rest of a box face, whose seed the small-plane pass took for a layer of its
+  // noise until a bent plane the seed bends away from stopped counting (isBandLayer: 0.916 -> 0.922,
+  // 51 -> 52).
   const Detection r = detect (cloud, truth);
-  EXPECT_GE (r.score.found, 49);
-  EXPECT_GE (r.score.f1, 0.89);
+  EXPECT_GE (r.score.found, 52);
+  EXPECT_GE (r.score.f1, 0.915);
   const auto unbent = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setBentPlaneSplit (false); };
   const Detection bent = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, unbent);
   EXPECT_LT (bent.score.f1, 0.85);

@@ -239,6 +239,7 @@ struct DetectorStatistics
   std::size_t merges = 0;            ///< patches absorbed by merging
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept (both rounds)
   std::size_t small_seeds_trimmed = 0; ///< of those, seeded on trimmed normals (left_normal_refit)
+  std::size_t small_seeds_beside = 0; ///< of those, no band layer only as faces beside a plane (isBandLayer)
   std::size_t left_refitted = 0;     ///< left samples given a trimmed-plane normal (left_normal_refit)
   std::size_t released = 0;          ///< members released as far from their plane (release_far_members)
   std::size_t restored = 0;          ///< of those, given back to their plane

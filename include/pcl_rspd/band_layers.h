@@ -1,0 +1,56 @@
+/*
+ * pcl_rspd: band layers — the small-plane pass's test that a seed is part of a plane already found.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief Whether a seed of the small-plane pass (or a plane seeded on what growth left) is a layer
+  * of a plane already found rather than a new plane: more than half of its members lie within the
+  * noise band of a plane that one of their graph neighbours holds.
+  *
+  * Such a seed is the samples between a door 2 cm proud of its wall and the wall, or a second copy
+  * of a small plane's own noise rim.
+  *
+  * A plane that is itself bent at an edge, and that the seed bends away from, does not count: the
+  * seed is the rest of the face that plane grew onto, not a layer of its noise. Where normals are
+  * noisy, growth crosses a shallow edge (MND reaches 30-70° on synpeb_pc01), the plane holds part of
+  * the face beyond, its spread and band widen, and the band covers the rest of that face
+  * (synpeb_pc01: a band of 17 cm over a box face 28° away, whose seed of 753 samples was turned
+  * down; the bent-plane split, later, cuts the part the plane holds off again). Bent: two planes
+  * meeting at an edge explain its members (bentAtAnEdge). Bends away: the seed's own plane lowers
+  * the robust σ of its samples' distances to at most DetectorParameters::bent_sigma_ratio of that
+  * plane's, and the two meet at more than 90° minus T1's angle (the bent-plane split's measure,
+  * isBend). A flat plane keeps its band: the next facet of a pipe or tank, a face 20-30° from the
+  * facet beside it, or a strip along a real room's edge is still a layer (measured: with no
+  * condition on the plane, room_scan1 got three more planes, strips along its edges; with "noisier
+  * than the seed" as the condition, the industrial scene at σ = 3 cm let 46 pipe and tank facets in
+  * and got one more false plane, a strip of a tank).
+  * \param[in] points samples (positions and normals)
+  * \param[in] graph their k-NN graph
+  * \param[in] params T1's angle and bent_sigma_ratio
+  * \param[in] patches the planes found
+  * \param[in] band per plane, the distance within which its noise lies
+  * \param[in] labels per sample, the plane holding it (kNoPatch: none)
+  * \param[in] seed the candidate (members, center, normal)
+  * \param[out] beside if not null: whether the seed is no layer only because it is a face beside a
+  * plane (without that rule, it would be one)
+  */
+bool
+isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+             const std::vector<PlanarPatch>& patches, const std::vector<double>& band,
+             const std::vector<std::uint32_t>& labels, const PlanarPatch& seed, bool* beside = nullptr);
+
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,163 @@
+/*
+ * Tests of the band-layer test of the small-plane pass (isBandLayer).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/band_layers.h>
+#include <pcl_rspd/patch_growth.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace pcl::rspd;
+
+namespace
+{
+/** A wall: the plane z = 0, 1 x 1 m, 40 x 40 samples, noise 3 mm, and one plane holding it whose
+  * noise band is \a band. A face of 20 x 20 samples on 0.3 x 0.3 m, noise \a face_noise, tilted by
+  * \a tilt about the y axis (rising along x), either over the wall's middle and raised by \a lift,
+  * or beside it (\a beside: from the wall's edge x = 1 on, meeting it there). As where a plane grew
+  * into a face, the plane also holds every other sample of the face (a checkerboard); the seed is
+  * the rest. */
+struct Scene
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<double> band;
+  std::vector<std::uint32_t> labels;
+  PlanarPatch seed;
+  NeighborGraph graph;
+};
+
+Scene
+makeScene (double tilt, double lift, float face_noise, double band, bool beside)
+{
+  Scene s;
+  std::vector<std::uint32_t> held = rspd_test::addRectangle (s.set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.003f, 1);
+  const float c = static_cast<float> (std::cos (tilt)), sn = static_cast<float> (std::sin (tilt));
+  const Eigen::Vector3f origin = beside ? Eigen::Vector3f (1.0f, 0.35f, 0.0f)
+                                        : Eigen::Vector3f (0.35f, 0.35f, static_cast<float> (lift));
+  const Eigen::Vector3f along (0, 0.3f, 0), across (0.3f * c, 0, 0.3f * sn);
+  const int n = 20;
+  const std::vector<std::uint32_t> face = rspd_test::addRectangle (s.set, origin, along, across, n, n, face_noise, 2);
+  std::vector<std::uint32_t> seed_members;
+  for (std::size_t k = 0; k < face.size (); ++k)
+    ((k / n + k % n) % 2 == 0 ? held : seed_members).push_back (face[k]);
+  std::sort (held.begin (), held.end ());
+  s.planes = {rspd_test::makePatch (held, {0.5, 0.5, 0}, {0, 0, 1}, 0.01, 0.1)};
+  s.band = {band};
+  s.labels.assign (s.set.points.size (), kNoPatch);
+  for (const auto i : held)
+    s.labels[i] = 0;
+  const Eigen::Vector3f middle = origin + 0.5f * along + 0.5f * across;
+  s.seed = rspd_test::makePatch (seed_members, middle.cast<double> (), along.cross (across).normalized ().cast<double> (),
+                                 0.01, 0.1);
+  s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
+  return s;
+}
+
+constexpr double kDegree = M_PI / 180.0;
+
+DetectorParameters
+parameters ()
+{
+  DetectorParameters p;
+  p.min_patch_size = 50;
+  return p;
+}
+} // namespace
+
+TEST (BandLayer, ParallelLayerWithinAPlanesBandIsALayer)
+{
+  // The samples between a door 2 cm proud of its wall and the wall: parallel, inside its 3 cm band.
+  const Scene s = makeScene (0.0, 0.01, 0.003f, 0.03, false);
+  EXPECT_TRUE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed));
+}
+
+TEST (BandLayer, ParallelLayerBeyondThePlanesBandIsNoLayer)
+{
+  const Scene s = makeScene (0.0, 0.05, 0.003f, 0.03, false);
+  EXPECT_FALSE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed));
+}
+
+TEST (BandLayer, FaceBesideAPlaneBentOntoItIsNoLayer)
+{
+  // The plane grew across the edge onto a face 30° away and holds half of it: two planes meeting at
+  // an edge explain its members, and its band (20 cm, widened by that face) covers the rest. The
+  // seed's own plane explains its samples far better than the wall's, at more than 15°: a face.
+  const Scene s = makeScene (30.0 * kDegree, 0.0, 0.003f, 0.2, true);
+  bool beside = false;
+  EXPECT_FALSE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed, &beside));
+  EXPECT_TRUE (beside);
+  // Without the samples of the face, the same plane is flat: the seed, out of its band's reach
+  // but along the edge, is no layer either, and not by that rule.
+  Scene t = makeScene (30.0 * kDegree, 0.0, 0.003f, 0.2, true);
+  t.planes[0].members.erase (std::remove_if (t.planes[0].members.begin (), t.planes[0].members.end (),
+                                             [] (std::uint32_t i) { return i >= 1600; }),
+                             t.planes[0].members.end ());
+  for (std::size_t i = 1600; i < t.labels.size (); ++i)
+    t.labels[i] = kNoPatch;
+  EXPECT_FALSE (isBandLayer (t.set, t.graph, parameters (), t.planes, t.band, t.labels, t.seed, &beside));
+  EXPECT_FALSE (beside);
+}
+
+TEST (BandLayer, ParallelLayerInABentPlanesBandIsStillALayer)
+{
+  // The bent plane of FaceBesideAPlaneBentOntoItIsNoLayer, and over its wall a layer 1 cm above it
+  // (a door's rim), half of it held by the plane: the layer's own plane explains it better than the
+  // wall's, but it is parallel, so the wall's band holds it.
+  Scene s = makeScene (30.0 * kDegree, 0.0, 0.003f, 0.2, true);
+  const std::vector<std::uint32_t> layer =
+      rspd_test::addRectangle (s.set, {0.35f, 0.35f, 0.01f}, {0.3f, 0, 0}, {0, 0.3f, 0}, 20, 20, 0.002f, 3);
+  s.labels.resize (s.set.points.size (), kNoPatch);
+  s.seed.members.clear ();
+  for (std::size_t k = 0; k < layer.size (); ++k)
+    if ((k / 20 + k % 20) % 2 == 0)
+    {
+      s.planes[0].members.push_back (layer[k]);
+      s.labels[layer[k]] = 0;
+    }
+    else
+      s.seed.members.push_back (layer[k]);
+  s.seed.center = Eigen::Vector3d (0.5, 0.5, 0.01);
+  s.seed.normal = Eigen::Vector3d::UnitZ ();
+  s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
+  bool beside = true;
+  EXPECT_TRUE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed, &beside));
+  EXPECT_FALSE (beside);
+}
+
+TEST (BandLayer, TiltedSeedOverAFlatPlaneIsALayer)
+{
+  // The same face over the wall, the plane holding half of it: no edge explains the plane (a
+  // curved surface's next facet looks like this), so its band claims the seed.
+  const Scene s = makeScene (30.0 * kDegree, 0.0, 0.003f, 0.2, false);
+  bool beside = true;
+  EXPECT_TRUE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed, &beside));
+  EXPECT_FALSE (beside);
+}
+
+TEST (BandLayer, GentleTiltBesideTheEdgeIsStillALayer)
+{
+  // 10°: below 90° minus T1's 75°, which T1 itself accepts as one plane.
+  const Scene s = makeScene (10.0 * kDegree, 0.0, 0.003f, 0.2, true);
+  EXPECT_TRUE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed));
+}
+
+TEST (BandLayer, NoisySeedThatItsOwnPlaneDoesNotExplainBetterIsALayer)
+{
+  // Beside the edge at 30°, but with noise (15 cm) that dwarfs the tilt's spread over the seed: its
+  // own plane does not lower the σ to 0.8 of the wall's, so the wall's band (50 cm) still claims it.
+  const Scene s = makeScene (30.0 * kDegree, 0.0, 0.15f, 0.5, true);
+  EXPECT_TRUE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed));
+}
+
+TEST (BandLayer, EmptySeedIsNoLayer)
+{
+  Scene s = makeScene (0.0, 0.01, 0.003f, 0.03, false);
+  s.seed.members.clear ();
+  EXPECT_FALSE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed));
+}
