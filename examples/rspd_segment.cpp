@@ -417,10 +417,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
        "pass (%zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face), %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

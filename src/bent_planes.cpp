@@ -4,6 +4,7 @@
  */
 #include <pcl_rspd/bent_planes.h>
 #include <pcl_rspd/normal_estimation.h>  // resolveThreads
+#include <pcl_rspd/patch_growth.h>       // labelSamples, kNoPatch
 #include <pcl_rspd/robust_statistics.h> // medianInPlace, kMadScale
 
 #include <Eigen/Eigenvalues>
@@ -255,7 +256,8 @@ joinUnbentLeaves (const PointSet& points, const DetectorParameters& params, std:
 } // namespace
 
 std::size_t
-splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
+                 std::vector<char>* split)
 {
   const std::size_t count = patches.size ();
   // Per plane, the member lists it ends as (none: unchanged).
@@ -266,11 +268,18 @@ splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::
       joinUnbentLeaves (points, params, pieces[p]);
 
   std::size_t added = 0;
+  if (split)
+    split->assign (count, 0);
   for (std::size_t p = 0; p < count; ++p)
   {
     auto& parts = pieces[p];
     if (parts.size () < 2)
       continue;
+    if (split)
+    {
+      (*split)[p] = 1;
+      split->resize (split->size () + parts.size () - 1, 1);
+    }
     for (auto& part : parts)
       std::sort (part.begin (), part.end ());
     // The largest part keeps the plane's place; ties to the lower first sample.
@@ -295,6 +304,88 @@ splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::
     }
   }
   return added;
+}
+
+std::size_t
+joinSplitFaces (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                std::vector<PlanarPatch>& patches, const std::vector<char>& split)
+{
+  if (patches.size () < 2 || std::find (split.begin (), split.end (), 1) == split.end ())
+    return 0;
+  const std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
+  // Touching pairs with a part of a split plane in them, each once (M1).
+  std::vector<std::uint64_t> keys;
+  for (std::uint32_t p = 0; p < patches.size (); ++p)
+  {
+    if (!split[p])
+      continue;
+    for (const auto i : patches[p].members)
+      graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+        const std::uint32_t q = labels[m];
+        if (q != kNoPatch && q != p)
+          keys.push_back ((static_cast<std::uint64_t> (std::min (p, q)) << 32) | std::max (p, q));
+      });
+  }
+  std::sort (keys.begin (), keys.end ());
+  keys.erase (std::unique (keys.begin (), keys.end ()), keys.end ());
+  // Largest pairs first (by the smaller plane, then the larger), so that a face's big parts meet
+  // before a sliver decides; ties by position.
+  const auto size = [&] (std::uint64_t k, bool first) {
+    return patches[first ? k >> 32 : k & 0xffffffffu].members.size ();
+  };
+  std::stable_sort (keys.begin (), keys.end (), [&] (std::uint64_t x, std::uint64_t y) {
+    const std::size_t xs = std::min (size (x, true), size (x, false)), ys = std::min (size (y, true), size (y, false));
+    if (xs != ys)
+      return xs > ys;
+    return std::max (size (x, true), size (x, false)) > std::max (size (y, true), size (y, false));
+  });
+  std::vector<std::vector<std::uint32_t>> group (patches.size ());
+  std::vector<std::uint32_t> owner (patches.size ()); // the plane whose group holds a plane
+  for (std::uint32_t p = 0; p < patches.size (); ++p)
+  {
+    group[p] = patches[p].members;
+    owner[p] = p;
+  }
+  const auto root = [&] (std::uint32_t p) {
+    while (owner[p] != p)
+      p = owner[p];
+    return p;
+  };
+  std::size_t absorbed = 0;
+  for (const auto key : keys)
+  {
+    std::uint32_t a = root (static_cast<std::uint32_t> (key >> 32)), b = root (static_cast<std::uint32_t> (key & 0xffffffffu));
+    if (a == b)
+      continue;
+    const double angle = std::acos (std::min (1.0, std::abs (patches[a].normal.dot (patches[b].normal))));
+    if (angle > 0.5 * M_PI - params.min_distance_angle)
+      continue;
+    std::vector<std::uint32_t> both (group[a]);
+    both.insert (both.end (), group[b].begin (), group[b].end ());
+    HingeFit fit;
+    if (fitHinge (points, both, fit) && fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma)
+      continue; // two planes explain the pair: an edge or a step between them
+    if (group[b].size () > group[a].size () || (group[b].size () == group[a].size () && b < a))
+      std::swap (a, b);
+    group[a].swap (both);
+    group[b].clear ();
+    owner[b] = a;
+    PlaneEstimate estimate;
+    std::sort (group[a].begin (), group[a].end ());
+    if (estimatePlane (points, group[a], params, estimate))
+    {
+      patches[a].setEstimate (estimate); // the next pair is judged against the joined plane
+      patches[a].first_index = group[a].front ();
+    }
+    ++absorbed;
+  }
+  if (absorbed == 0)
+    return 0;
+  for (std::uint32_t p = 0; p < patches.size (); ++p)
+    patches[p].members.swap (group[p]);
+  patches.erase (std::remove_if (patches.begin (), patches.end (), [] (const PlanarPatch& p) { return p.members.empty (); }),
+                 patches.end ());
+  return absorbed;
 }
 
 } // namespace rspd

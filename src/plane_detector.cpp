@@ -763,7 +763,9 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   {
     // Bent planes (departure, see DetectorParameters::bent_plane_split); after the curved check,
     // which judges whole facets of a curved surface, not the parts a split would leave.
-    st.bent_planes = splitBentPlanes (points, params, patches);
+    std::vector<char> split;
+    st.bent_planes = splitBentPlanes (points, params, patches, &split);
+    st.bent_joined = joinSplitFaces (points, graph, params, patches, split);
   }
 
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())

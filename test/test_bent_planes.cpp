@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 
 using namespace pcl::rspd;
@@ -118,8 +119,15 @@ TEST (BentPlanes, RoofHeldByOnePlaneIsSplitIntoItsFaces)
 {
   const Roof r = makeRoof (30.0f * kDegree, 0.01f);
   std::vector<PlanarPatch> patches = onePlane (r.set.size ());
-  EXPECT_EQ (splitBentPlanes (r.set, parameters (), patches), 1u);
+  std::vector<char> split;
+  EXPECT_EQ (splitBentPlanes (r.set, parameters (), patches, &split), 1u);
   ASSERT_EQ (patches.size (), 2u);
+  EXPECT_EQ (split, std::vector<char> ({1, 1}));
+  // Its faces are no face shared by two planes.
+  const NeighborGraph graph = rspd_test::bruteForceGraph (r.set.points, 20);
+  std::vector<PlanarPatch> joined = patches;
+  EXPECT_EQ (joinSplitFaces (r.set, graph, parameters (), joined, split), 0u);
+  EXPECT_EQ (joined.size (), 2u);
   // Samples change face only within noise of both planes (3 σ / sin 30° = 6 cm of the edge).
   for (const auto& face : r.faces)
   {
@@ -253,4 +261,84 @@ TEST (BentPlanes, SetsThatDetermineNoTwoPlanesAreRefused)
   EXPECT_EQ (patches[1].members, same);
   std::vector<PlanarPatch> none;
   EXPECT_EQ (splitBentPlanes (s, parameters (), none), 0u);
+}
+
+namespace
+{
+/** Two planes over the halves of one 0.8 x 0.6 m square (x < 0 and x >= 0, 80 x 60 samples, noise
+  * \a noise), the right half raised by \a step and turned by \a turn about the y axis, each plane
+  * estimated on its own samples; a gap of \a gap between them. */
+struct Halves
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  NeighborGraph graph;
+};
+
+Halves
+makeHalves (float noise, float step, float turn, float gap = 0.0f)
+{
+  Halves h;
+  const std::vector<std::uint32_t> left =
+      rspd_test::addRectangle (h.set, {-0.4f, 0, 0}, {0.4f, 0, 0}, {0, 0.6f, 0}, 40, 60, noise, 11);
+  const Eigen::Vector3f across (0.4f * std::cos (turn), 0, 0.4f * std::sin (turn));
+  const std::vector<std::uint32_t> right =
+      rspd_test::addRectangle (h.set, {gap, 0, step}, across, {0, 0.6f, 0}, 40, 60, noise, 12);
+  for (const auto* half : {&left, &right})
+  {
+    PlaneEstimate e;
+    EXPECT_TRUE (estimatePlane (h.set, *half, parameters (), e));
+    PlanarPatch p;
+    p.members = *half;
+    p.first_index = half->front ();
+    p.setEstimate (e);
+    h.planes.push_back (std::move (p));
+  }
+  h.graph = rspd_test::bruteForceGraph (h.set.points, 20);
+  return h;
+}
+} // namespace
+
+TEST (BentPlanes, FaceSharedByTwoSplitPlanesIsJoinedAgain)
+{
+  Halves h = makeHalves (0.01f, 0.0f, 0.0f);
+  EXPECT_EQ (joinSplitFaces (h.set, h.graph, parameters (), h.planes, {1, 1}), 1u);
+  ASSERT_EQ (h.planes.size (), 1u);
+  EXPECT_EQ (h.planes[0].members.size (), h.set.size ());
+  EXPECT_TRUE (std::is_sorted (h.planes[0].members.begin (), h.planes[0].members.end ()));
+  EXPECT_EQ (h.planes[0].first_index, 0u);
+  // One part of a split plane is enough; neither is not.
+  Halves one = makeHalves (0.01f, 0.0f, 0.0f);
+  EXPECT_EQ (joinSplitFaces (one.set, one.graph, parameters (), one.planes, {0, 1}), 1u);
+  Halves none = makeHalves (0.01f, 0.0f, 0.0f);
+  EXPECT_EQ (joinSplitFaces (none.set, none.graph, parameters (), none.planes, {0, 0}), 0u);
+  EXPECT_EQ (none.planes.size (), 2u);
+  // Nor is a part of a split plane elsewhere.
+  const std::vector<std::uint32_t> far =
+      rspd_test::addRectangle (none.set, {5, 0, 0}, {0.3f, 0, 0}, {0, 0.3f, 0}, 10, 10, 0.01f, 13);
+  none.planes.push_back (rspd_test::makePatch (far, {5.15, 0.15, 0}, {0, 0, 1}, 0.03, 0.3));
+  none.graph = rspd_test::bruteForceGraph (none.set.points, 20);
+  EXPECT_EQ (joinSplitFaces (none.set, none.graph, parameters (), none.planes, {0, 0, 1}), 0u);
+  EXPECT_EQ (none.planes.size (), 3u);
+}
+
+TEST (BentPlanes, FacesAtAnEdgeAStepOrAGapStayApart)
+{
+  // A 30° edge (normals beyond T1's 15°), a step of 5 σ (a hinge fit explains it), and a gap of
+  // 10 cm (no graph edge between the halves).
+  Halves edge = makeHalves (0.005f, 0.0f, 30.0f * kDegree);
+  EXPECT_EQ (joinSplitFaces (edge.set, edge.graph, parameters (), edge.planes, {1, 1}), 0u);
+  // 25° under 8 cm of noise: a hinge fit no longer tells the faces apart, their normals do.
+  Halves noisy = makeHalves (0.08f, 0.0f, 25.0f * kDegree);
+  HingeFit fit;
+  std::vector<std::uint32_t> all (noisy.set.size ());
+  std::iota (all.begin (), all.end (), 0u);
+  ASSERT_TRUE (fitHinge (noisy.set, all, fit));
+  EXPECT_GT (fit.split_sigma, 0.8 * fit.single_sigma);
+  EXPECT_EQ (joinSplitFaces (noisy.set, noisy.graph, parameters (), noisy.planes, {1, 1}), 0u);
+  Halves step = makeHalves (0.005f, 0.025f, 0.0f);
+  EXPECT_EQ (joinSplitFaces (step.set, step.graph, parameters (), step.planes, {1, 1}), 0u);
+  Halves gap = makeHalves (0.005f, 0.0f, 0.0f, 0.1f);
+  EXPECT_EQ (joinSplitFaces (gap.set, gap.graph, parameters (), gap.planes, {1, 1}), 0u);
+  EXPECT_EQ (gap.planes.size (), 2u);
 }

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_rspd/neighbor_graph.h>
 #include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/point_set.h>
@@ -72,10 +73,34 @@ bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples,
   * \param[in] params constants (ε, T1-T3, bent_sigma_ratio, threads)
   * \param[in,out] patches planes; a split plane keeps its place for its largest part, the others are
   * appended, and every part is estimated again (Eqs. 3-9)
+  * \param[out] split if not null: per plane (after the split), whether it is a part of a split plane
   * \return planes added
   */
 std::size_t
-splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches);
+splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
+                 std::vector<char>* split = nullptr);
+
+/** \brief Bent planes, second step: join again a face that two bent planes shared.
+  *
+  * Where growth carried two planes across their edges onto the same face (synpeb_pc01: a box face
+  * of 4,102 samples, 1,518 held by one plane and 2,318 by another, each also holding a face of its
+  * own), splitBentPlanes cuts each at its edge and leaves the face in two parts, coplanar and
+  * touching, which no merge joins any more. Two planes are joined when at least one of them is a
+  * part the split produced, a graph edge joins their members (M1), their normals meet at no more
+  * than 90° minus T1's angle (15°: what T1 accepts as one plane), and their union is neither bent
+  * nor stepped (fitHinge lowers its robust σ by less than bent_sigma_ratio: the test by which the
+  * split joins its own leaves). Pairs are taken largest first; a joined plane is estimated again.
+  * The result does not depend on the thread count.
+  * \param[in] points samples
+  * \param[in] graph their k-NN graph
+  * \param[in] params constants (T1's angle, bent_sigma_ratio, ε)
+  * \param[in,out] patches planes; a joined pair keeps the larger's place
+  * \param[in] split per plane, whether splitBentPlanes produced it (as it reports)
+  * \return planes absorbed
+  */
+std::size_t
+joinSplitFaces (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                std::vector<PlanarPatch>& patches, const std::vector<char>& split);
 
 } // namespace rspd
 } // namespace pcl

@@ -247,6 +247,7 @@ struct DetectorStatistics
   std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
   std::size_t split_planes = 0;      ///< planes added by splitting planes into connected parts (connected_parts)
   std::size_t bent_planes = 0;       ///< planes added by splitting bent planes at their edge (bent_plane_split)
+  std::size_t bent_joined = 0;       ///< of the planes then, those joined to another as one face (joinSplitFaces)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
