@@ -188,8 +188,9 @@ struct DetectorParameters
   /** \brief Departure (bent planes, see splitBentPlanes): after the connected parts and the curved check, a plane whose
     * members two planes meeting at an edge explain (fitHinge: the robust σ falls to at most
     * bent_sigma_ratio, they meet at more than 90° minus T1's angle, each side has ε samples and passes
-    * T1-T3) is split at the edge, and each part again (three levels). With noisy normals MND is wide,
-    * and growth and re-estimation carry a plane over an edge onto the next face. false = the paper. */
+    * T1-T3) is split at the edge, and each part again (three levels); then parts of split planes
+    * that are one face are joined again (joinSplitFaces). With noisy normals MND is wide, and growth
+    * and re-estimation carry a plane over an edge onto the next face. false = the paper. */
   bool bent_plane_split = true;
   /** \brief Bent planes: the largest ratio of the two planes' robust σ to the one plane's that counts as
     * a bend (0.8; fitHinge's search on flat noisy planes stays above 0.85). */

@@ -366,8 +366,10 @@ public:
 
   /** \brief Bent planes (default true; false = the paper): a plane whose samples lie on two planes
     * meeting at an edge (more than 90° minus T1's angle apart, lowering the robust spread to at most
-    * 0.8 of one plane's, each side a plane by T1-T3) is split there, and each part again. See
-    * pcl::rspd::splitBentPlanes and pcl::rspd::DetectorParameters::bent_plane_split. */
+    * 0.8 of one plane's, each side a plane by T1-T3) is split there, and each part again; parts of
+    * split planes that are one face (touching, within 15°, no bend or step between them) are then
+    * joined. See pcl::rspd::splitBentPlanes, pcl::rspd::joinSplitFaces and
+    * pcl::rspd::DetectorParameters::bent_plane_split. */
   void
   setBentPlaneSplit (bool enable);
   /** \brief Whether planes bent at an edge are split. */
