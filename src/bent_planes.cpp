@@ -310,6 +310,8 @@ std::size_t
 joinSplitFaces (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
                 std::vector<PlanarPatch>& patches, const std::vector<char>& split)
 {
+  // A plane past the end of split is no part (a caller's shorter list).
+  const auto isPart = [&] (std::size_t p) { return p < split.size () && split[p]; };
   if (patches.size () < 2 || std::find (split.begin (), split.end (), 1) == split.end ())
     return 0;
   const std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
@@ -317,7 +319,7 @@ joinSplitFaces (const PointSet& points, const NeighborGraph& graph, const Detect
   std::vector<std::uint64_t> keys;
   for (std::uint32_t p = 0; p < patches.size (); ++p)
   {
-    if (!split[p])
+    if (!isPart (p))
       continue;
     for (const auto i : patches[p].members)
       graph.forEachNeighbor (i, [&] (std::uint32_t m) {
@@ -370,13 +372,11 @@ joinSplitFaces (const PointSet& points, const NeighborGraph& graph, const Detect
     group[a].swap (both);
     group[b].clear ();
     owner[b] = a;
-    PlaneEstimate estimate;
     std::sort (group[a].begin (), group[a].end ());
+    patches[a].first_index = group[a].front ();
+    PlaneEstimate estimate;
     if (estimatePlane (points, group[a], params, estimate))
-    {
       patches[a].setEstimate (estimate); // the next pair is judged against the joined plane
-      patches[a].first_index = group[a].front ();
-    }
     ++absorbed;
   }
   if (absorbed == 0)

@@ -312,6 +312,9 @@ TEST (BentPlanes, FaceSharedByTwoSplitPlanesIsJoinedAgain)
   EXPECT_EQ (joinSplitFaces (one.set, one.graph, parameters (), one.planes, {0, 1}), 1u);
   Halves none = makeHalves (0.01f, 0.0f, 0.0f);
   EXPECT_EQ (joinSplitFaces (none.set, none.graph, parameters (), none.planes, {0, 0}), 0u);
+  EXPECT_EQ (joinSplitFaces (none.set, none.graph, parameters (), none.planes, {}), 0u); // a short list
+  Halves short_list = makeHalves (0.01f, 0.0f, 0.0f);
+  EXPECT_EQ (joinSplitFaces (short_list.set, short_list.graph, parameters (), short_list.planes, {1}), 1u);
   EXPECT_EQ (none.planes.size (), 2u);
   // Nor is a part of a split plane elsewhere.
   const std::vector<std::uint32_t> far =
