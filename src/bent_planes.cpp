@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <utility>
 
 namespace pcl
@@ -232,6 +233,15 @@ splitAtEdges (const PointSet& points, const DetectorParameters& params, const st
   return true;
 }
 
+/** Whether two planes explain \a samples far better than one (fitHinge lowers the robust σ to at
+  * most bent_sigma_ratio): an edge or a step between two parts, whatever their angle. */
+bool
+twoPlanesExplain (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params)
+{
+  HingeFit fit;
+  return fitHinge (points, samples, fit) && fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma;
+}
+
 /** Joins leaves whose union is no bent plane (a face the cuts divided) until none is left. */
 void
 joinUnbentLeaves (const PointSet& points, const DetectorParameters& params, std::vector<std::vector<std::uint32_t>>& leaves)
@@ -244,9 +254,8 @@ joinUnbentLeaves (const PointSet& points, const DetectorParameters& params, std:
       {
         std::vector<std::uint32_t> both (leaves[a]);
         both.insert (both.end (), leaves[b].begin (), leaves[b].end ());
-        HingeFit fit;
-        if (fitHinge (points, both, fit) && fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma)
-          continue; // two planes explain the pair: an edge or a step between them
+        if (twoPlanesExplain (points, both, params))
+          continue; // an edge or a step between them
         leaves[a].swap (both);
         leaves.erase (leaves.begin () + static_cast<std::ptrdiff_t> (b));
         joined = true;
@@ -341,13 +350,9 @@ joinSplitFaces (const PointSet& points, const NeighborGraph& graph, const Detect
       return xs > ys;
     return std::max (size (x, true), size (x, false)) > std::max (size (y, true), size (y, false));
   });
-  std::vector<std::vector<std::uint32_t>> group (patches.size ());
-  std::vector<std::uint32_t> owner (patches.size ()); // the plane whose group holds a plane
-  for (std::uint32_t p = 0; p < patches.size (); ++p)
-  {
-    group[p] = patches[p].members;
-    owner[p] = p;
-  }
+  // A joined plane's members gather in the larger one's place; owner leads an absorbed plane there.
+  std::vector<std::uint32_t> owner (patches.size ());
+  std::iota (owner.begin (), owner.end (), 0u);
   const auto root = [&] (std::uint32_t p) {
     while (owner[p] != p)
       p = owner[p];
@@ -362,29 +367,26 @@ joinSplitFaces (const PointSet& points, const NeighborGraph& graph, const Detect
     const double angle = std::acos (std::min (1.0, std::abs (patches[a].normal.dot (patches[b].normal))));
     if (angle > 0.5 * M_PI - params.min_distance_angle)
       continue;
-    std::vector<std::uint32_t> both (group[a]);
-    both.insert (both.end (), group[b].begin (), group[b].end ());
-    HingeFit fit;
-    if (fitHinge (points, both, fit) && fit.split_sigma <= params.bent_sigma_ratio * fit.single_sigma)
-      continue; // two planes explain the pair: an edge or a step between them
-    if (group[b].size () > group[a].size () || (group[b].size () == group[a].size () && b < a))
+    std::vector<std::uint32_t> both (patches[a].members);
+    both.insert (both.end (), patches[b].members.begin (), patches[b].members.end ());
+    if (twoPlanesExplain (points, both, params))
+      continue; // an edge or a step between them
+    const std::size_t na = patches[a].members.size (), nb = patches[b].members.size ();
+    if (nb > na || (nb == na && b < a))
       std::swap (a, b);
-    group[a].swap (both);
-    group[b].clear ();
+    std::sort (both.begin (), both.end ());
+    patches[a].members.swap (both);
+    patches[a].first_index = patches[a].members.front ();
+    patches[b].members.clear ();
     owner[b] = a;
-    std::sort (group[a].begin (), group[a].end ());
-    patches[a].first_index = group[a].front ();
     PlaneEstimate estimate;
-    if (estimatePlane (points, group[a], params, estimate))
+    if (estimatePlane (points, patches[a].members, params, estimate))
       patches[a].setEstimate (estimate); // the next pair is judged against the joined plane
     ++absorbed;
   }
-  if (absorbed == 0)
-    return 0;
-  for (std::uint32_t p = 0; p < patches.size (); ++p)
-    patches[p].members.swap (group[p]);
-  patches.erase (std::remove_if (patches.begin (), patches.end (), [] (const PlanarPatch& p) { return p.members.empty (); }),
-                 patches.end ());
+  if (absorbed > 0)
+    patches.erase (std::remove_if (patches.begin (), patches.end (), [] (const PlanarPatch& p) { return p.members.empty (); }),
+                   patches.end ());
   return absorbed;
 }
 
