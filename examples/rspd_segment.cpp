@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--curved-check on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -93,6 +93,10 @@ const char* const kHelp =
     "                   points no plane took (a flat one seeds a plane); keep = the paper\n"
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
+    "  --bend-test noise|share  a noisy seed or plane is flat unless a quadric explains more of\n"
+    "                   its residual than it explains of a flat plane's noise with as many points,\n"
+    "                   and a grown one is thinner than half its narrow side ('noise', the default)\n"
+    "                   or unless it explains a quarter ('share', as before)\n"
     "  --assign M       once growth is stable, give points growth left out to a neighbouring plane\n"
     "                   by distance alone: next to two or more planes ('edges'); those and, inside\n"
     "                   one plane, points with its normal within 4 robust sigma of it ('tails', the\n"
@@ -128,6 +132,7 @@ struct Options
   bool connected_parts = true;
   bool bent_split = true;
   bool curved_check = false;
+  bool bend_noise_test = true;
   bool drop_outlier_seeds = true;
   bool retest_outlier_seeds = true;
   bool dominant_frame = true;
@@ -245,6 +250,8 @@ parseArguments (int argc, char** argv)
     }
     else if (arg == "--curved-check")
       o.curved_check = option.choice ("on", "off");
+    else if (arg == "--bend-test")
+      o.bend_noise_test = option.choice ("noise", "share");
     else if (arg == "--assign")
     {
       const std::string v = value ();
@@ -393,6 +400,7 @@ run (const Options& o)
   seg.setConnectedParts (o.connected_parts);
   seg.setBentPlaneSplit (o.bent_split);
   seg.setCurvedPlaneCheck (o.curved_check);
+  seg.setBendNoiseTest (o.bend_noise_test);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setOutlierSeedRetest (o.retest_outlier_seeds);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);

@@ -11,6 +11,7 @@
 #include <pcl_rspd/patch_growth.h>
 #include <pcl_rspd/patch_merge.h>
 #include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/plane_curvature.h>
 #include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/plane_support.h>
 #include <pcl_rspd/robust_normals.h>
@@ -282,75 +283,6 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   }
 }
 
-} // namespace
-
-PlaneCurvature
-measureCurvature (const PointSet& points, const std::vector<std::uint32_t>& members)
-{
-  PlaneCurvature c;
-  if (members.size () < 12)
-    return c;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
-  for (const auto m : members)
-    mean += points.points[m].cast<double> ();
-  mean /= static_cast<double> (members.size ());
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
-  for (const auto m : members)
-  {
-    const Eigen::Vector3d q = points.points[m].cast<double> () - mean;
-    scatter += q * q.transpose ();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (scatter);
-  const Eigen::Vector3d n = solver.eigenvectors ().col (0);
-  const Eigen::Vector3d u = solver.eigenvectors ().col (2);
-  const Eigen::Vector3d v = solver.eigenvectors ().col (1);
-  // In-plane coordinates scaled to about unit range, so the normal equations are well conditioned.
-  const double scale = std::sqrt (std::max (solver.eigenvalues () (2) / static_cast<double> (members.size ()), 1e-300));
-  Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
-  Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
-  double rss_plane = 0.0;
-  for (const auto m : members)
-  {
-    const Eigen::Vector3d q = points.points[m].cast<double> () - mean;
-    const double x = q.dot (u) / scale, y = q.dot (v) / scale, w = q.dot (n);
-    Eigen::Matrix<double, 6, 1> f;
-    f << x * x, x * y, y * y, x, y, 1.0;
-    a.selfadjointView<Eigen::Lower> ().rankUpdate (f);
-    b += f * w;
-    rss_plane += w * w;
-  }
-  if (!(rss_plane > 0.0))
-    return c;
-  a.triangularView<Eigen::StrictlyUpper> () = a.transpose ();
-  // Rank-revealing: samples on a few scan lines leave the quadric terms undetermined.
-  const Eigen::Matrix<double, 6, 1> coef = a.completeOrthogonalDecomposition ().solve (b);
-  const double explained = coef.dot (b);
-  if (!std::isfinite (explained))
-    return c;
-  c.share = std::min (1.0, std::max (0.0, explained / rss_plane));
-  // Hessian of w(u, v) in the data's units: its largest curvature times the half extent along that
-  // direction is the slope, hence the turn of the normal, from the middle of the patch to its rim.
-  Eigen::Matrix2d h;
-  h << 2.0 * coef (0), coef (1), coef (1), 2.0 * coef (2);
-  h /= scale * scale;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> bend (h);
-  const int k = std::abs (bend.eigenvalues () (0)) > std::abs (bend.eigenvalues () (1)) ? 0 : 1;
-  const double kappa = std::abs (bend.eigenvalues () (k));
-  const Eigen::Vector3d along = bend.eigenvectors () (0, k) * u + bend.eigenvectors () (1, k) * v;
-  double lo = HUGE_VAL, hi = -HUGE_VAL;
-  for (const auto m : members)
-  {
-    const double t = (points.points[m].cast<double> () - mean).dot (along);
-    lo = std::min (lo, t);
-    hi = std::max (hi, t);
-  }
-  // Slope of the quadric at the rim, half the extent away along its most curved direction.
-  c.half_bend = std::isfinite (kappa) ? std::atan (0.5 * kappa * (hi - lo)) : 0.0;
-  return c;
-}
-
-namespace
-{
 /** Drop every plane that is a facet of a curved surface (departure, see
   * DetectorParameters::min_curvature_share). \return planes dropped */
 std::size_t
@@ -361,13 +293,7 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
 #pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
   for (std::ptrdiff_t p = 0; p < count; ++p)
   {
-    const PlaneCurvature c = measureCurvature (points, patches[p].members);
-    // Curved: the bend explains a good share of the residual and accounts for at least half of the
-    // patch's normal tolerance (a facet of a curved surface grows until its rim normals reach MND,
-    // so its half-bend is a large part of MND; a scanned wall bends by a small part of it). A quadric
-    // that leaves no residual at all was not determined by the samples (a few scan lines, which six
-    // coefficients interpolate), so such a patch is not judged.
-    curved[p] = c.share >= params.min_curvature_share && c.share <= 0.999 && c.half_bend >= 0.5 * patches[p].mnd;
+    curved[p] = isCurvedPatch (measureCurvature (points, patches[p].members), patches[p].mnd, params);
   }
   std::size_t dropped = 0;
   std::size_t kept = 0;
@@ -546,19 +472,6 @@ offerReleasedSamples (const PointSet& points, const NeighborGraph& graph, const 
   return restored;
 }
 
-/** Whether a patch noisier than the planes grown is flat: noise, not a bend, spreads its normals.
-  * A quadric fitted to its samples (measureCurvature) explains less than min_curvature_share of
-  * their residual (a tank's facet 86-99 %, a rough box face 0-6 %) and, once \a grown, also turns
-  * the normal from their middle to their rim by less than half the patch's MND. A seed of 50
-  * samples is not judged by its bend: fitted to noise alone, six coefficients bend it by about its
-  * MND (a box face at σ 6 mm: 0.05-0.16 rad against MND 0.04-0.08); grown, the bend is measured. */
-bool
-flatPatch (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch, bool grown)
-{
-  const PlaneCurvature c = measureCurvature (points, patch.members);
-  return c.share < params.min_curvature_share && (!grown || c.half_bend < 0.5 * patch.mnd);
-}
-
 /** Sec. 3.5: grow, merge and re-estimate until no patch needs an update (or the cap). */
 void
 growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
@@ -646,7 +559,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     const auto unbent = [&] (PlanarPatch& plane) {
       plane.joined = true;
       plane.retested = true;
-      return !bentAtAnEdge (points, plane.members, params) && flatPatch (points, params, plane, false);
+      return !bentAtAnEdge (points, plane.members, params) && isFlatPatch (points, params, plane, false);
     };
     for (const auto& group : joined)
       seeded += seedLeftSamples (points, graph, params, group.members, unbent, patches, band, labels);
@@ -662,7 +575,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     std::vector<double> band = noiseBands (points, params, patches);
     const auto flat = [&] (PlanarPatch& plane) {
       plane.retested = true; // judged again once grown
-      return flatPatch (points, params, plane, false);
+      return isFlatPatch (points, params, plane, false);
     };
     for (const auto& seed : outlier_seeds)
       st.retested_seeds += seedLeftSamples (points, graph, params, seed.members, flat, patches, band, labels);
@@ -702,7 +615,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       st.rim_seeds += rim_seeds;
       for (auto& seed : seeds)
       {
-        if (seed.mnd > max_mnd && (seed.mnd > max_retested_mnd || !flatPatch (round_points, params, seed, false)))
+        if (seed.mnd > max_mnd && (seed.mnd > max_retested_mnd || !isFlatPatch (round_points, params, seed, false)))
           continue; // noisier than every plane found: an edge band of bent normals, not a plane
         bool beside = false;
         if (isBandLayer (round_points, graph, params, patches, band, labels, seed, &beside))
@@ -731,7 +644,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // may have lacked to show a bend, and it must still be flat (at 10,000 points a pipe is sampled
     // a few times around, and its facets' seeds are too small to tell).
     patches.erase (std::remove_if (patches.begin (), patches.end (),
-                                   [&] (const PlanarPatch& p) { return p.retested && !flatPatch (points, params, p, true); }),
+                                   [&] (const PlanarPatch& p) { return p.retested && !isFlatPatch (points, params, p, true); }),
                    patches.end ());
     labels = labelSamples (points.size (), patches);
   }

@@ -474,6 +474,18 @@ public:
   bool
   getCurvedPlaneCheck () const { return params_.curved_plane_check; }
 
+  /** \brief Bend tested against noise (default true; false = a fixed share, as before): where a
+    * noisy seed or plane is judged flat (the outlier-seed retest, the thick-cell groups, the
+    * small-plane pass), a quadric's share of its residual counts as a bend only beyond what the
+    * quadric explains of a flat plane's noise with as many samples (95 % of the time), and a grown
+    * plane must be thinner than half its narrow side. See pcl::rspd::isFlatPatch and
+    * pcl::rspd::DetectorParameters::bend_confidence. */
+  void
+  setBendNoiseTest (bool enable);
+  /** \brief Whether bends are tested against noise. */
+  bool
+  getBendNoiseTest () const { return params_.bend_confidence > 0.0; }
+
   /** \brief Last assignment pass once grow-merge is stable (default Tails; None = the paper): samples
     * growth left out join a neighbouring plane: at edges by distance alone (Edges), and inside a
     * plane also its noise tail (Tails). See

@@ -404,6 +404,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setBendNoiseTest (bool enable)
+{
+  params_.bend_confidence = enable ? pcl::rspd::DetectorParameters ().bend_confidence : 0.0;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setFinalAssignment (pcl::rspd::FinalAssignment mode)
 {
   params_.final_assignment = mode;

@@ -1,0 +1,70 @@
+/*
+ * pcl_rspd: plane curvature — how far a set of samples bends away from its plane, and whether that
+ * bend is real: the flat test of noisy seeds and the curved-surface check (departures from the paper).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief How much a set of samples bends away from its least-squares plane (the curved-surface
+  * check, DetectorParameters::min_curvature_share, and the flat test, isFlatPatch). */
+struct PlaneCurvature
+{
+  double share = 0.0;        ///< 1 - RSS(quadric) / RSS(plane): share of the residual a quadric explains
+  double half_bend = 0.0;    ///< radians the quadric's normal turns from the middle of the samples to their rim
+  double minor_extent = 0.0; ///< extent of the samples along their plane's second principal axis (its narrow side)
+  std::size_t samples = 0;   ///< samples measured; 0 when too few (fewer than 12) or no residual
+};
+
+/** \brief Fit w = a u² + b uv + c v² + d u + e v + f over the samples' least-squares plane (u, v in
+  * the plane, w along its normal) and report how much of the residual the bend explains and how far
+  * it turns the normal. Fewer than 12 samples or no residual: zeros. */
+PlaneCurvature
+measureCurvature (const PointSet& points, const std::vector<std::uint32_t>& members);
+
+/** \brief The share of a flat plane's residual that the quadric of measureCurvature, fitted to
+  * \a samples of it with Gaussian noise, stays below with probability \a confidence.
+  *
+  * Over the least-squares plane the linear and constant terms explain nothing, and the three
+  * quadratic terms explain χ²₃ of the noise against χ²ₙ₋₆ left: the share is Beta(3/2, (n-6)/2),
+  * whose mean 3/(n-3) is 0.23 at 16 samples, 0.06 at 50 and 0.015 at 200. A fixed share cannot tell
+  * a bend from noise at every size: 0.25 calls a flat 16-sample seed bent two times in five.
+  * \return the quantile (1 for 6 samples or fewer: nothing can be told), 0 for \a confidence <= 0 */
+double
+chanceBendShare (std::size_t samples, double confidence);
+
+/** \brief Whether a patch noisier than the planes grown is flat: noise, not a bend, spreads its
+  * normals (the outlier-seed retest, the thick-cell groups and the small-plane pass).
+  *
+  * Its quadric's share (measureCurvature) is one noise explains (chanceBendShare at
+  * DetectorParameters::bend_confidence), or it is below min_curvature_share and, once \a grown, the
+  * bend turns the normal from the middle to the rim by less than half the patch's MND (a bend too
+  * small to spread its normals). A seed is not judged by its bend: fitted to 50 samples of noise,
+  * six coefficients bend it by about its MND (a box face at σ 6 mm: 0.05-0.16 rad against MND
+  * 0.04-0.08). Grown, a patch must also be thinner than it is wide: a noise band (MDP) as wide as
+  * half its narrow side is a tube sampled all round (a pipe 0.3 m across at 30,000 points: 30° where
+  * the paper's T1 asks 75° of the long side), whose quadric explains nothing. */
+bool
+isFlatPatch (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch, bool grown);
+
+/** \brief Whether a plane is a facet of a curved surface (DetectorParameters::min_curvature_share):
+  * the bend explains at least min_curvature_share of the residual and more than noise would
+  * (chanceBendShare), and turns the normal by at least half the plane's MND (a facet of a curved
+  * surface grows until its rim normals reach MND; a scanned wall bends by a small part of it). A
+  * quadric that leaves no residual at all was not determined by the samples (a few scan lines, which
+  * six coefficients interpolate): not judged. */
+bool
+isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& params);
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,119 @@
+/*
+ * pcl_rspd: plane curvature (see plane_curvature.h).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/plane_curvature.h>
+
+#include <boost/math/distributions/beta.hpp>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pcl
+{
+namespace rspd
+{
+PlaneCurvature
+measureCurvature (const PointSet& points, const std::vector<std::uint32_t>& members)
+{
+  PlaneCurvature c;
+  if (members.size () < 12)
+    return c;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+  for (const auto m : members)
+    mean += points.points[m].cast<double> ();
+  mean /= static_cast<double> (members.size ());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
+  for (const auto m : members)
+  {
+    const Eigen::Vector3d q = points.points[m].cast<double> () - mean;
+    scatter += q * q.transpose ();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (scatter);
+  const Eigen::Vector3d n = solver.eigenvectors ().col (0);
+  const Eigen::Vector3d u = solver.eigenvectors ().col (2);
+  const Eigen::Vector3d v = solver.eigenvectors ().col (1);
+  // In-plane coordinates scaled to about unit range, so the normal equations are well conditioned.
+  const double scale = std::sqrt (std::max (solver.eigenvalues () (2) / static_cast<double> (members.size ()), 1e-300));
+  Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
+  Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
+  double rss_plane = 0.0;
+  for (const auto m : members)
+  {
+    const Eigen::Vector3d q = points.points[m].cast<double> () - mean;
+    const double x = q.dot (u) / scale, y = q.dot (v) / scale, w = q.dot (n);
+    Eigen::Matrix<double, 6, 1> f;
+    f << x * x, x * y, y * y, x, y, 1.0;
+    a.selfadjointView<Eigen::Lower> ().rankUpdate (f);
+    b += f * w;
+    rss_plane += w * w;
+  }
+  if (!(rss_plane > 0.0))
+    return c;
+  a.triangularView<Eigen::StrictlyUpper> () = a.transpose ();
+  // Rank-revealing: samples on a few scan lines leave the quadric terms undetermined.
+  const Eigen::Matrix<double, 6, 1> coef = a.completeOrthogonalDecomposition ().solve (b);
+  const double explained = coef.dot (b);
+  if (!std::isfinite (explained))
+    return c;
+  c.share = std::min (1.0, std::max (0.0, explained / rss_plane));
+  c.samples = members.size ();
+  // Hessian of w(u, v) in the data's units: its largest curvature times the half extent along that
+  // direction is the slope, hence the turn of the normal, from the middle of the patch to its rim.
+  Eigen::Matrix2d h;
+  h << 2.0 * coef (0), coef (1), coef (1), 2.0 * coef (2);
+  h /= scale * scale;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> bend (h);
+  const int k = std::abs (bend.eigenvalues () (0)) > std::abs (bend.eigenvalues () (1)) ? 0 : 1;
+  const double kappa = std::abs (bend.eigenvalues () (k));
+  const Eigen::Vector3d along = bend.eigenvectors () (0, k) * u + bend.eigenvectors () (1, k) * v;
+  double lo = HUGE_VAL, hi = -HUGE_VAL, minor_lo = HUGE_VAL, minor_hi = -HUGE_VAL;
+  for (const auto m : members)
+  {
+    const Eigen::Vector3d q = points.points[m].cast<double> () - mean;
+    const double t = q.dot (along), s = q.dot (v);
+    lo = std::min (lo, t);
+    hi = std::max (hi, t);
+    minor_lo = std::min (minor_lo, s);
+    minor_hi = std::max (minor_hi, s);
+  }
+  c.minor_extent = minor_hi - minor_lo;
+  // Slope of the quadric at the rim, half the extent away along its most curved direction.
+  c.half_bend = std::isfinite (kappa) ? std::atan (0.5 * kappa * (hi - lo)) : 0.0;
+  return c;
+}
+
+double
+chanceBendShare (std::size_t samples, double confidence)
+{
+  if (!(confidence > 0.0))
+    return 0.0;
+  if (samples <= 6 || !(confidence < 1.0))
+    return 1.0;
+  const boost::math::beta_distribution<double> share (1.5, 0.5 * (static_cast<double> (samples) - 6.0));
+  return boost::math::quantile (share, confidence);
+}
+
+bool
+isFlatPatch (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch, bool grown)
+{
+  const PlaneCurvature c = measureCurvature (points, patch.members);
+  const bool calibrated = params.bend_confidence > 0.0;
+  if (calibrated && grown && c.samples > 0 && !(0.5 * c.minor_extent > patch.mdp))
+    return false; // a tube: its noise band is as wide as half its narrow side
+  if (calibrated && c.share < chanceBendShare (c.samples, params.bend_confidence))
+    return true;  // noise explains the bend
+  return c.share < params.min_curvature_share && (!grown || c.half_bend < 0.5 * patch.mnd);
+}
+
+bool
+isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& params)
+{
+  return c.share >= params.min_curvature_share && c.share >= chanceBendShare (c.samples, params.bend_confidence) &&
+         c.share <= 0.999 && c.half_bend >= 0.5 * mnd;
+}
+} // namespace rspd
+} // namespace pcl
