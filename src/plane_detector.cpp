@@ -593,6 +593,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       double& bound = p.retested || p.joined ? max_retested_mnd : max_mnd;
       bound = std::max (bound, p.mnd);
     }
+    // The tightest plane grown (no noisy seed's): the floor of a small seed's MND.
+    double min_mnd = HUGE_VAL;
+    for (const auto& p : patches)
+      if (!p.retested && !p.joined)
+        min_mnd = std::min (min_mnd, p.mnd);
     std::vector<double> band = noiseBands (points, params, patches);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
@@ -622,6 +627,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
           continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate
         for (const auto i : seed.members)
           labels[i] = static_cast<std::uint32_t> (patches.size ());
+        if (params.small_seed_mnd_floor && std::isfinite (min_mnd) && seed.mnd < min_mnd)
+        {
+          seed.mnd = min_mnd; // see DetectorParameters::small_seed_mnd_floor
+          seed.cos_mnd = std::cos (min_mnd);
+        }
         seed.retested = seed.mnd > max_mnd; // let in by a retested seed: judged again once grown
         st.small_seeds_beside += beside;
         patches.push_back (std::move (seed));

@@ -474,6 +474,16 @@ public:
   bool
   getCurvedPlaneCheck () const { return params_.curved_plane_check; }
 
+  /** \brief Small seeds' MND floor (default true; false = a seed's own MND): a seed of the
+    * small-plane pass gets at least the MND of the tightest plane grown, since the normals of its few
+    * samples share most of their neighbours and agree better than its plane's do. See
+    * pcl::rspd::DetectorParameters::small_seed_mnd_floor. */
+  void
+  setSmallSeedMndFloor (bool enable);
+  /** \brief Whether small seeds' MND is floored. */
+  bool
+  getSmallSeedMndFloor () const { return params_.small_seed_mnd_floor; }
+
   /** \brief Bend tested against noise (default true; false = a fixed share, as before): where a
     * noisy seed or plane is judged flat (the outlier-seed retest, the thick-cell groups, the
     * small-plane pass), a quadric's share of its residual counts as a bend only beyond what the

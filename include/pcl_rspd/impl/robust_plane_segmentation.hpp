@@ -404,6 +404,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSmallSeedMndFloor (bool enable)
+{
+  params_.small_seed_mnd_floor = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setBendNoiseTest (bool enable)
 {
   params_.bend_confidence = enable ? pcl::rspd::DetectorParameters ().bend_confidence : 0.0;
