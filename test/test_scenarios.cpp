@@ -79,6 +79,18 @@ detectScene (const std::string& name, const pcl::rspd::SceneOptions& options = {
   return detect (scene.cloud, scene.labels, &scene.kinds, small_plane_seeding, normal_scale, configure);
 }
 
+/** PCL's PCA normals over k = 50 neighbours, as rspd_compare shares them with every method. */
+pcl::PointCloud<pcl::Normal>::Ptr
+pclNormals (const pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
+  estimation.setInputCloud (std::make_shared<pcl::PointCloud<pcl::PointXYZ>> (cloud));
+  estimation.setKSearch (50);
+  estimation.compute (*normals);
+  return normals;
+}
+
 bool
 loadShared (const std::string& name, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<std::uint32_t>& truth)
 {
@@ -415,11 +427,7 @@ TEST (Scenario, SparseStaircaseAndYardNeedTheAutomaticK)
   // With the caller's normals (PCL's k = 50, as rspd_compare shares them) k stays the paper's 50;
   // the small-plane pass, its cells capped at ε/2, still seeds the risers (17 of 30 without the cap).
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
-  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
-  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setInputCloud (std::make_shared<pcl::PointCloud<pcl::PointXYZ>> (scene.cloud));
-  estimation.setKSearch (50);
-  estimation.compute (*normals);
+  const auto normals = pclNormals (scene.cloud);
   const Detection given = detect (scene.cloud, scene.labels, nullptr, true, pcl::rspd::NormalScale::Automatic,
                                   [&] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setInputNormals (normals); });
   EXPECT_GE (given.score.found, 29);
@@ -517,11 +525,7 @@ TEST (Scenario, SparseRoomsTableTopNeedsTheSmallSeedMndFloor)
   pcl::rspd::SceneOptions o;
   o.num_points = 30000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", o);
-  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
-  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setInputCloud (std::make_shared<pcl::PointCloud<pcl::PointXYZ>> (scene.cloud));
-  estimation.setKSearch (50);
-  estimation.compute (*normals);
+  const auto normals = pclNormals (scene.cloud);
   const auto given = [&] (bool floor) {
     return [&, floor] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
       EXPECT_TRUE (s.getSmallSeedMndFloor ());
