@@ -584,20 +584,18 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   {
     // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
     // (left_normal_refit) on the trimmed normals of the samples still left.
-    // The noisiest plane grown, and the noisiest plane a noisy seed seeded (a retested outlier
-    // seed, not grown yet, or a thick-cell group).
-    double max_mnd = 0.0, max_retested_mnd = 0.0;
+    // The noisiest plane grown, the noisiest plane a noisy seed seeded (a retested outlier seed,
+    // not grown yet, or a thick-cell group), and the tightest plane grown: a small seed's MND floor.
+    double max_mnd = 0.0, max_retested_mnd = 0.0, min_mnd = HUGE_VAL;
     for (const auto& p : patches)
     {
       // A noisy seed's plane (retested, or a thick-cell group) lets in only seeds as flat as it.
-      double& bound = p.retested || p.joined ? max_retested_mnd : max_mnd;
+      const bool noisy = p.retested || p.joined;
+      double& bound = noisy ? max_retested_mnd : max_mnd;
       bound = std::max (bound, p.mnd);
-    }
-    // The tightest plane grown (no noisy seed's): the floor of a small seed's MND.
-    double min_mnd = HUGE_VAL;
-    for (const auto& p : patches)
-      if (!p.retested && !p.joined)
+      if (!noisy)
         min_mnd = std::min (min_mnd, p.mnd);
+    }
     std::vector<double> band = noiseBands (points, params, patches);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
