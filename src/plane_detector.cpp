@@ -580,7 +580,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     for (const auto& seed : outlier_seeds)
       st.retested_seeds += seedLeftSamples (points, graph, params, seed.members, flat, patches, band, labels);
   }
-  if (params.small_cell_size > 0 && params.small_cell_size < params.min_patch_size && !patches.empty ())
+  if (params.small_cell_size > 0 && params.small_cell_size <= params.min_patch_size && !patches.empty ())
   {
     // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
     // (left_normal_refit) on the trimmed normals of the samples still left.

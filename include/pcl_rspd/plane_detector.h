@@ -76,7 +76,9 @@ struct DetectorParameters
   bool align_normals = true;
   /** \brief Departure (small planes): once grow-merge is stable, split the samples no patch holds
     * again with cells down to this many samples (0 = off, the paper; RobustPlaneSegmentation uses
-    * k + 1, at most ε/2 and at least 10; the pass runs only if this is below ε), keep the new seeds
+    * k + 1, at most ε/2 and at least 10; the pass runs if this is at most ε: at ε = 10, up to 10,000
+    * samples, its cells are as large as Algorithm 1's, but they split only what growth left, a riser
+    * without the treads that mixed into every cell of the first split), keep the new seeds
     * whose MND is no larger than the largest MND of the planes already found and fewer than half of
     * whose samples lie within the noise band of a plane a graph neighbour holds (a layer of that
     * plane), grow-merge again, and drop every plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a

@@ -84,7 +84,8 @@ struct RobustPlane
   *  - small planes (setSmallPlaneSeeding(false) for the paper): a plane whose ε-sample octree cells
   *    always mix with a neighbour (a stair riser between two treads) is never seeded by Algorithm 1.
   *    Once grow-merge is stable, the samples no plane holds are split again with cells down to k + 1
-  *    samples (at most ε/2, at least 10); a new seed is kept only if its MND is at most the largest
+  *    samples (at most ε/2, at least 10; at ε = 10 as large as the first split's, but on what
+  *    growth left alone); a new seed is kept only if its MND is at most the largest
   *    MND of the planes found (edge bands of bent normals are noisier and would bridge faces through
   *    M2) and it is not a layer of a found plane's noise band, grow-merge runs again, and planes
   *    still smaller than ε are dropped;
