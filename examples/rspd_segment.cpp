@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -70,6 +70,8 @@ const char* const kHelp =
     "                   distance test (T1) and agree on their plane; once growth is stable, what\n"
     "                   it left of a group seeds a plane if it passes the tests (default on;\n"
     "                   off = the paper)\n"
+    "  --small-thick-join on|off  the small-plane pass joins its thick cells the same way\n"
+    "                   (default on; needs --thick-join on)\n"
     "  --step-sides on|off  where two parallel planes make a step deeper than their noise bands,\n"
     "                   a point within the other plane's band goes to it when it holds more of\n"
     "                   the point's neighbours (default on; off = the paper)\n"
@@ -127,6 +129,7 @@ struct Options
   bool edge_sides = true;
   bool step_sides = true;
   bool thick_join = true;
+  bool small_thick_join = true;
   bool support = true;
   bool left_normals = false;
   bool connected_parts = true;
@@ -226,6 +229,8 @@ parseArguments (int argc, char** argv)
       o.edge_sides = option.choice ("on", "off");
     else if (arg == "--thick-join")
       o.thick_join = option.choice ("on", "off");
+    else if (arg == "--small-thick-join")
+      o.small_thick_join = option.choice ("on", "off");
     else if (arg == "--step-sides")
       o.step_sides = option.choice ("on", "off");
     else if (arg == "--left-normals")
@@ -395,6 +400,7 @@ run (const Options& o)
   seg.setEdgeSides (o.edge_sides);
   seg.setStepSides (o.step_sides);
   seg.setThickCellJoin (o.thick_join);
+  seg.setSmallPassThickCellJoin (o.small_thick_join);
   seg.setSupportCheck (o.support);
   seg.setLeftNormalRefit (o.left_normals);
   seg.setConnectedParts (o.connected_parts);
@@ -424,10 +430,10 @@ run (const Options& o)
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
-       "pass (%zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
+       "pass (%zu by groups of its thick cells, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations, %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face), %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
-       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
+       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",

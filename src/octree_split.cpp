@@ -40,8 +40,9 @@ class OctreeSplitter
 {
 public:
   OctreeSplitter (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>* subset,
-                  bool retest_rim_cells, bool keep_thick_cells)
-    : points_ (points), params_ (params), retest_rim_cells_ (retest_rim_cells), keep_thick_cells_ (keep_thick_cells)
+                  bool retest_rim_cells, bool keep_thick_cells, double thick_max_mnd)
+    : points_ (points), params_ (params), retest_rim_cells_ (retest_rim_cells), keep_thick_cells_ (keep_thick_cells),
+      thick_max_mnd_ (thick_max_mnd)
   {
     if (subset)
       order_ = *subset;
@@ -117,7 +118,7 @@ public:
       }
     }
     const bool thick = keep_thick_cells_ && r.verdict == PlanarityVerdict::FailedDistance &&
-                       r.estimate.mnd () < params_.max_normal_deviation && r.outlier_ratio < params_.max_outlier_ratio &&
+                       r.estimate.mnd () < params_.max_normal_deviation && r.estimate.mnd () <= thick_max_mnd_ && r.outlier_ratio < params_.max_outlier_ratio &&
                        (1.0 - r.outlier_ratio) * static_cast<double> (samples.size ()) >= static_cast<double> (params_.min_patch_size);
     if (thick || r.verdict == PlanarityVerdict::Planar)
       out.thick.erase (out.thick.begin () + thick_before, out.thick.end ()); // the cell holds its subtree's
@@ -191,6 +192,7 @@ private:
   const DetectorParameters& params_;
   const bool retest_rim_cells_;
   const bool keep_thick_cells_;
+  const double thick_max_mnd_;
   std::vector<std::uint32_t> order_;
 };
 /** Thick-cell join (departure, DetectorParameters::join_thick_cells): thick cells whose cubes touch
@@ -266,10 +268,10 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats,
             const std::vector<std::uint32_t>* subset, bool retest_rim_cells, std::size_t* rim_seeds,
-            std::vector<PlanarPatch>* joined_out)
+            std::vector<PlanarPatch>* joined_out, double thick_max_mnd)
 {
-  const bool join = params.join_thick_cells && subset == nullptr;
-  OctreeSplitter splitter (points, params, subset, retest_rim_cells, join);
+  const bool join = params.join_thick_cells && (subset == nullptr || joined_out != nullptr);
+  OctreeSplitter splitter (points, params, subset, retest_rim_cells, join, thick_max_mnd);
   if (splitter.size () == 0)
     return {};
   Eigen::Vector3d lo;

@@ -145,6 +145,17 @@ seedLeftSamples (const PointSet& points, const NeighborGraph& graph, const Detec
   return true;
 }
 
+/** A group of thick cells' plane, made of what growth left (seedLeftSamples' accept): marked as
+  * noisy (judged flat again once grown, no bound for the small-plane pass's seeds), and kept only
+  * if two planes meeting at an edge do not explain it and its quadric shows no bend. */
+bool
+acceptThickGroup (const PointSet& points, const DetectorParameters& params, PlanarPatch& plane)
+{
+  plane.joined = true;
+  plane.retested = true;
+  return !bentAtAnEdge (points, plane.members, params) && isFlatPatch (points, params, plane, false);
+}
+
 /** One round of a pass that offers unlabelled samples to planes: sample open[j] joins plane
   * choice[j] (kNoPatch: stays open); the samples left open and their choices are compacted to the
   * front. \return samples that joined a plane */
@@ -556,11 +567,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // their growth (synpeb_pc01 0.9149 -> 0.9115, one more fragment, and rotations moved it by 0.008).
     std::vector<double> band = noiseBands (points, params, patches);
     std::size_t seeded = 0;
-    const auto unbent = [&] (PlanarPatch& plane) {
-      plane.joined = true;
-      plane.retested = true;
-      return !bentAtAnEdge (points, plane.members, params) && isFlatPatch (points, params, plane, false);
-    };
+    const auto unbent = [&] (PlanarPatch& plane) { return acceptThickGroup (points, params, plane); };
     for (const auto& group : joined)
       seeded += seedLeftSamples (points, graph, params, group.members, unbent, patches, band, labels);
     st.joined_seeds = seeded;
@@ -580,6 +587,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     for (const auto& seed : outlier_seeds)
       st.retested_seeds += seedLeftSamples (points, graph, params, seed.members, flat, patches, band, labels);
   }
+  std::vector<PlanarPatch> joined_left; // the small-plane pass's groups of thick cells
   if (params.small_cell_size > 0 && params.small_cell_size <= params.min_patch_size && !patches.empty ())
   {
     // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
@@ -614,7 +622,10 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       }
       const PointSet& round_points = round == 0 ? points : refitted;
       std::size_t rim_seeds = 0;
-      std::vector<PlanarPatch> seeds = splitPhase (round_points, small, &st, &left, params.rim_cell_retest, &rim_seeds);
+      // Groups of thick cells on the PCA normals only: they seed once the pass's growth is stable.
+      std::vector<PlanarPatch> seeds = splitPhase (round_points, small, &st, &left, params.rim_cell_retest, &rim_seeds,
+                                                   params.small_cell_thick_join && round == 0 ? &joined_left : nullptr,
+                                                   std::max (max_mnd, max_retested_mnd));
       st.rim_seeds += rim_seeds;
       for (auto& seed : seeds)
       {
@@ -655,6 +666,31 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                    [&] (const PlanarPatch& p) { return p.retested && !isFlatPatch (points, params, p, true); }),
                    patches.end ());
     labels = labelSamples (points.size (), patches);
+  }
+  if (!joined_left.empty () && !patches.empty ())
+  {
+    // Groups of the small-plane pass's thick cells (see DetectorParameters::small_cell_thick_join),
+    // on what the pass's growth left of them, as the first split's groups (no MND bound: a group
+    // joins cells along its plane's rims, where normals bend). Seeded with the pass's seeds, a strip
+    // of an edge band between a riser's small seed and its treads joined the riser, whose plane
+    // the bend of those members then dropped whole (the staircase at 50,000 points, seed 5).
+    labels = labelSamples (points.size (), patches);
+    std::vector<double> band = noiseBands (points, params, patches);
+    const auto unbent = [&] (PlanarPatch& plane) { return acceptThickGroup (points, params, plane); };
+    for (const auto& group : joined_left)
+      st.small_joined_seeds += seedLeftSamples (points, graph, params, group.members, unbent, patches, band, labels);
+    st.small_seeds += st.small_joined_seeds;
+    if (st.small_joined_seeds > 0)
+    {
+      growMergeUntilStable (points, graph, params, patches, labels, flags, st);
+      patches.erase (std::remove_if (patches.begin (), patches.end (),
+                                     [&] (const PlanarPatch& p) {
+                                       return p.members.size () < params.min_patch_size ||
+                                              (p.retested && !isFlatPatch (points, params, p, true));
+                                     }),
+                     patches.end ());
+      labels = labelSamples (points.size (), patches);
+    }
   }
 
   if (params.release_far_members && !patches.empty ())

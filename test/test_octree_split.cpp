@@ -244,13 +244,31 @@ TEST (OctreeSplit, ThickCellsOfOneFaceAreJoinedIntoItsSeed)
   EXPECT_EQ (faces.size (), 6u);
 }
 
-TEST (OctreeSplit, ThickCellsAreNotJoinedInTheSmallCellPass)
+TEST (OctreeSplit, ThickCellsOfASubsetAreJoinedOnlyWhenAskedAndUnderTheMndBound)
 {
-  // The join is part of the first split only: a subset split (the small-cell pass) is the paper's.
+  // A subset split (the small-cell pass) joins its thick cells only if the caller takes the groups
+  // (small_cell_thick_join), and keeps no thick cell noisier (MND) than the bound it is given.
   const PointSet s = noisyCube ();
   std::vector<std::uint32_t> all (s.size ());
   std::iota (all.begin (), all.end (), 0u);
   EXPECT_TRUE (splitPhase (s, params (100), nullptr, &all).empty ());
+
+  std::vector<PlanarPatch> groups;
+  DetectorStatistics st;
+  EXPECT_TRUE (splitPhase (s, params (100), &st, &all, false, nullptr, &groups).empty ());
+  EXPECT_EQ (groups.size (), 6u);
+  EXPECT_EQ (st.joined_seeds, 0u); // the caller counts what it seeds
+
+  // The faces' normals are exact: every cell's MND is the floor (normal_deviation_floor). A bound
+  // just below it keeps no thick cell, one at it keeps the six groups.
+  const double floor = params (100).normal_deviation_floor;
+  for (const auto& g : groups)
+    EXPECT_NEAR (g.mnd, floor, 1e-9);
+  groups.clear ();
+  splitPhase (s, params (100), nullptr, &all, false, nullptr, &groups, 0.5 * floor);
+  EXPECT_TRUE (groups.empty ());
+  splitPhase (s, params (100), nullptr, &all, false, nullptr, &groups, floor);
+  EXPECT_EQ (groups.size (), 6u);
 }
 
 TEST (OctreeSplit, CellThatPassesHoldsItsThickCells)

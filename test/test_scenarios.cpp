@@ -509,6 +509,28 @@ TEST (Scenario, RoughBoxesOnASmoothFloorNeedTheOutlierSeedRetest)
   EXPECT_EQ (retest.score.false_planes, 0);
 }
 
+TEST (Scenario, NoisyBoxFaceNeedsTheSmallPassThickCellJoin)
+{
+  // Seed 2: one face of the σ = 3 cm box (2,466 samples) shares every first-split cell with its
+  // neighbours, and every small cell of it, under 0.4 m, fails T1 alone (51-72°): never seeded, 31
+  // of 32 planes. Joined, eleven of those thick cells pass T1-T3 as a group (measured).
+  pcl::rspd::SceneOptions o;
+  o.seed = 2;
+  const Detection joined = detectScene ("boxes", o);
+  const Detection cells = detectScene ("boxes", o, true, pcl::rspd::NormalScale::Automatic,
+                                       [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                                         EXPECT_TRUE (s.getSmallPassThickCellJoin ());
+                                         s.setSmallPassThickCellJoin (false);
+                                         EXPECT_FALSE (s.getSmallPassThickCellJoin ());
+                                       });
+  EXPECT_GT (joined.stats.small_joined_seeds, 0u);
+  EXPECT_EQ (cells.stats.small_joined_seeds, 0u);
+  EXPECT_EQ (joined.score.found, 32);
+  EXPECT_LE (cells.score.found, 31);
+  EXPECT_GT (joined.score.f1, cells.score.f1);
+  EXPECT_EQ (joined.score.false_planes, 0);
+}
+
 TEST (Scenario, SparseBoxesNeedTheBendNoiseTest)
 {
   // 30,000 samples: a box face holds 110-370 and is seeded by small cells of 15-60, noisier than

@@ -214,6 +214,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_FALSE (room == labels ("r.pcd", "room_sides_off.pcd", {"--edge-sides=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_steps_on.pcd", {"--step-sides", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_thick_on.pcd", {"--thick-join", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_small_thick_on.pcd", {"--small-thick-join", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));

@@ -8,6 +8,7 @@
 #include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/point_set.h>
 
+#include <cmath>
 #include <vector>
 
 namespace pcl
@@ -34,18 +35,23 @@ namespace rspd
   *            inliers, which seed a patch if they pass (DetectorParameters::rim_cell_retest; the
   *            small-cell pass only, false = the paper)
   * \param[out] rim_seeds patches found that way are counted here (may be null)
-  * \param[out] joined_out with params.join_thick_cells, on the whole cloud (no subset): the groups
+  * \param[out] joined_out with params.join_thick_cells: the groups
   *            of thick cells that pass T1-T3 and are not bentAtAnEdge (bent_planes.h) go here (null: they are appended to the
-  *            patches, after the cells' own, and counted in stats->joined_seeds). Thick cells are
+  *            patches, after the cells' own, and counted in stats->joined_seeds; on a subset, thick
+  *            cells are joined only if this is given). Thick cells are
   *            the largest cells that fail T1 alone (T2 and T3 pass, ε inliers); touching ones join
   *            when their planes agree (normals within either's MND, at least 1 - T3's share of
   *            each one's samples within the other's MDP).
+  * \param[in] thick_max_mnd a cell whose MND is above this is not kept as thick (the small-plane
+  *            pass: the noisiest plane found; blobs of outliers, whose cells are as thick as wide,
+  *            have MNDs up to T2's 60°)
   * \return the patches, in depth-first octree order (deterministic)
   */
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr,
             const std::vector<std::uint32_t>* subset = nullptr, bool retest_rim_cells = false,
-            std::size_t* rim_seeds = nullptr, std::vector<PlanarPatch>* joined_out = nullptr);
+            std::size_t* rim_seeds = nullptr, std::vector<PlanarPatch>* joined_out = nullptr,
+            double thick_max_mnd = HUGE_VAL);
 
 } // namespace rspd
 } // namespace pcl

@@ -91,6 +91,18 @@ struct DetectorParameters
     * 0.1° against the room's 1-2°, grew from 17 to 25 samples, short of the 50 % that re-estimates
     * it, and stayed under ε. false = the seed's own MND. */
   bool small_seed_mnd_floor = true;
+  /** \brief Departure (thick cells among the left samples, part of the small-plane pass and of the
+    * thick-cell join: needs both): the pass's split keeps its thick cells too, if no noisier (MND)
+    * than the noisiest plane found, and joins them as the first split does; what is left of a group
+    * seeds a plane if it passes T1-T3, is no noise-band layer, is not bentAtAnEdge and its quadric
+    * shows no bend, with no MND bound on the group (its cells run along its plane's rims, where
+    * normals bend). Without the cells' bound, thick cells of outliers, as thick as they are wide,
+    * with MNDs of 47-60°, joined into a 7 m slab that grew into a plane (the boxes with 15 %
+    * outliers: F1 0.953 → 0.820). A noisy face whose every first-split cell holds a
+    * neighbour, and whose small cells are too thick for their extent, is seeded no other way: a box's
+    * face at σ = 3 cm, every cell of it under 0.4 m failing T1 at 51-72° (measured; the boxes with
+    * seeds 2 and 3). false = the small cells alone. */
+  bool small_cell_thick_join = true;
   /** \brief Departure (trimmed normals for what growth left, part of the small-cell pass): after
     * the pass's split on the PCA normals, the samples still left get the normal of their
     * k-neighbourhood's reweighted least-trimmed-squares plane (refineNormalsTrimmed) in a copy, and
@@ -258,6 +270,7 @@ struct DetectorStatistics
   std::size_t merges = 0;            ///< patches absorbed by merging
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept (both rounds)
   std::size_t small_seeds_trimmed = 0; ///< of those, seeded on trimmed normals (left_normal_refit)
+  std::size_t small_joined_seeds = 0; ///< of those, seeded by groups of the pass's thick cells (small_cell_thick_join)
   std::size_t small_seeds_beside = 0; ///< of those, no band layer only as faces beside a plane (isBandLayer)
   std::size_t left_refitted = 0;     ///< left samples given a trimmed-plane normal (left_normal_refit)
   std::size_t released = 0;          ///< members released as far from their plane (release_far_members)

@@ -120,7 +120,8 @@ struct RobustPlane
   *  - thick-cell join (setThickCellJoin(false) for the paper): the split also joins touching cells
   *    that fail T1 alone and agree on their plane; once growth is stable, what it left of each group
   *    seeds a plane if it passes T1-T3 (a cube at σ = 3 % of its edge: no cell holding one face is
-  *    wide enough for T1);
+  *    wide enough for T1); the small-plane pass joins its own thick cells, if no noisier than the
+  *    noisiest plane found, the same way (setSmallPassThickCellJoin(false) for its cells alone);
   *  - step sides (setStepSides(false) for the paper): then a sample next to a parallel plane offset
   *    by more than both noise bands goes to it when it lies within its band and it holds more of the
   *    sample's neighbours, until none moves (a window recessed 20 cm behind a wall scanned at
@@ -484,6 +485,16 @@ public:
   /** \brief Whether small seeds' MND is floored. */
   bool
   getSmallSeedMndFloor () const { return params_.small_seed_mnd_floor; }
+
+  /** \brief Thick cells among the left samples (default true; false = the small cells alone): the
+    * small-plane pass's split also joins touching cells that fail T1 alone, as the thick-cell join
+    * does in the first split (it needs setThickCellJoin(true) too). See
+    * pcl::rspd::DetectorParameters::small_cell_thick_join. */
+  void
+  setSmallPassThickCellJoin (bool enable);
+  /** \brief Whether the small-plane pass joins its thick cells. */
+  bool
+  getSmallPassThickCellJoin () const { return params_.small_cell_thick_join; }
 
   /** \brief Bend tested against noise (default true; false = a fixed share, as before): where a
     * noisy seed or plane is judged flat (the outlier-seed retest, the thick-cell groups, the

@@ -411,6 +411,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSmallSeedMndFloor (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSmallPassThickCellJoin (bool enable)
+{
+  params_.small_cell_thick_join = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setBendNoiseTest (bool enable)
 {
   params_.bend_confidence = enable ? pcl::rspd::DetectorParameters ().bend_confidence : 0.0;
