@@ -512,7 +512,7 @@ TEST (Scenario, RoughBoxesOnASmoothFloorNeedTheOutlierSeedRetest)
 TEST (Scenario, NoisyBoxFaceNeedsTheSmallPassThickCellJoin)
 {
   // Seed 2: one face of the σ = 3 cm box (2,466 samples) shares every first-split cell with its
-  // neighbours, and every small cell of it, under 0.4 m, fails T1 alone (51-72°): never seeded, 31
+  // neighbours, and every small cell of it, under 0.4 m, fails T1 alone (45-72°): never seeded, 31
   // of 32 planes. Joined, eleven of those thick cells pass T1-T3 as a group (measured).
   pcl::rspd::SceneOptions o;
   o.seed = 2;

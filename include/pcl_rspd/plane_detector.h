@@ -100,7 +100,7 @@ struct DetectorParameters
     * with MNDs of 47-60°, joined into a 7 m slab that grew into a plane (the boxes with 15 %
     * outliers: F1 0.953 → 0.820). A noisy face whose every first-split cell holds a
     * neighbour, and whose small cells are too thick for their extent, is seeded no other way: a box's
-    * face at σ = 3 cm, every cell of it under 0.4 m failing T1 at 51-72° (measured; the boxes with
+    * face at σ = 3 cm, every cell of it under 0.4 m failing T1 at 45-72° (measured; the boxes with
     * seeds 2 and 3). false = the small cells alone. */
   bool small_cell_thick_join = true;
   /** \brief Departure (trimmed normals for what growth left, part of the small-cell pass): after
