@@ -39,7 +39,8 @@ namespace rspd
   *            of thick cells that pass T1-T3 and are not bentAtAnEdge (bent_planes.h) go here (null: they are appended to the
   *            patches, after the cells' own, and counted in stats->joined_seeds; on a subset, thick
   *            cells are joined only if this is given). Thick cells are
-  *            the largest cells that fail T1 alone (T2 and T3 pass, ε inliers); touching ones join
+  *            the largest cells that fail T1 alone (T2 and T3 pass, ε inliers; on a subset, not a
+  *            cell bentAtAnEdge over thick cells of its own); touching ones join
   *            when their planes agree (normals within either's MND, at least 1 - T3's share of
   *            each one's samples within the other's MDP).
   * \param[in] thick_max_mnd a cell whose MND is above this is not kept as thick (the small-plane
