@@ -91,6 +91,22 @@ pclNormals (const pcl::PointCloud<pcl::PointXYZ>& cloud)
   return normals;
 }
 
+using Configure = std::function<void (pcl::RobustPlaneSegmentation<pcl::PointXYZ>&)>;
+
+/** A scene's detection on PCL's k = 50 normals (pclNormals, computed once by the caller), with its
+  * curved samples scored, configured further by \a configure. */
+Detection
+detectOnPclNormals (const pcl::rspd::Scene& scene, const pcl::PointCloud<pcl::Normal>::Ptr& normals,
+                    const Configure& configure = {})
+{
+  return detect (scene.cloud, scene.labels, &scene.kinds, true, pcl::rspd::NormalScale::Automatic,
+                 [&] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                   s.setInputNormals (normals);
+                   if (configure)
+                     configure (s);
+                 });
+}
+
 bool
 loadShared (const std::string& name, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<std::uint32_t>& truth)
 {
@@ -442,9 +458,7 @@ TEST (Scenario, SparseStaircaseAndYardNeedTheAutomaticK)
   // With the caller's normals (PCL's k = 50, as rspd_compare shares them) k stays the paper's 50;
   // the small-plane pass, its cells capped at ε/2, still seeds the risers (17 of 30 without the cap).
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
-  const auto normals = pclNormals (scene.cloud);
-  const Detection given = detect (scene.cloud, scene.labels, nullptr, true, pcl::rspd::NormalScale::Automatic,
-                                  [&] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setInputNormals (normals); });
+  const Detection given = detectOnPclNormals (scene, pclNormals (scene.cloud));
   EXPECT_GE (given.score.found, 29);
   EXPECT_GE (given.score.f1, 0.96);
   const Detection yard = detectScene ("industrial", o);
@@ -540,14 +554,10 @@ TEST (Scenario, SparseStaircaseOnPclNormalsNeedsTheSmallPassThickCells)
   o.num_points = 10000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
   const auto normals = pclNormals (scene.cloud);
-  const auto given = [&] (bool join) {
-    return [&, join] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
-      s.setInputNormals (normals);
-      s.setSmallPassThickCellJoin (join);
-    };
-  };
-  const Detection joined = detect (scene.cloud, scene.labels, nullptr, true, pcl::rspd::NormalScale::Automatic, given (true));
-  const Detection cells = detect (scene.cloud, scene.labels, nullptr, true, pcl::rspd::NormalScale::Automatic, given (false));
+  const Detection joined = detectOnPclNormals (scene, normals);
+  const Detection cells = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    s.setSmallPassThickCellJoin (false);
+  });
   EXPECT_EQ (joined.score.found, 30);
   EXPECT_LE (cells.score.found, 29);
   EXPECT_GT (joined.score.f1, cells.score.f1);
@@ -586,15 +596,11 @@ TEST (Scenario, SparseRoomsTableTopNeedsTheSmallSeedMndFloor)
   o.num_points = 30000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", o);
   const auto normals = pclNormals (scene.cloud);
-  const auto given = [&] (bool floor) {
-    return [&, floor] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
-      EXPECT_TRUE (s.getSmallSeedMndFloor ());
-      s.setInputNormals (normals);
-      s.setSmallSeedMndFloor (floor);
-    };
-  };
-  const Detection floored = detect (scene.cloud, scene.labels, &scene.kinds, true, pcl::rspd::NormalScale::Automatic, given (true));
-  const Detection own = detect (scene.cloud, scene.labels, &scene.kinds, true, pcl::rspd::NormalScale::Automatic, given (false));
+  const Detection floored = detectOnPclNormals (scene, normals);
+  const Detection own = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    EXPECT_TRUE (s.getSmallSeedMndFloor ());
+    s.setSmallSeedMndFloor (false);
+  });
   EXPECT_GE (floored.score.found, 9);
   EXPECT_LE (own.score.found, 8);
   EXPECT_GT (floored.score.f1, own.score.f1);
