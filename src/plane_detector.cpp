@@ -145,15 +145,26 @@ seedLeftSamples (const PointSet& points, const NeighborGraph& graph, const Detec
   return true;
 }
 
-/** A group of thick cells' plane, made of what growth left (seedLeftSamples' accept): marked as
-  * noisy (judged flat again once grown, no bound for the small-plane pass's seeds), and kept only
-  * if two planes meeting at an edge do not explain it and its quadric shows no bend. */
-bool
-acceptThickGroup (const PointSet& points, const DetectorParameters& params, PlanarPatch& plane)
+/** Groups of thick cells (the first split's or the small-plane pass's), each made a plane of what
+  * growth left of it (seedLeftSamples) against the current planes' noise bands: marked as noisy
+  * (judged flat again once grown, no bound for the small-plane pass's seeds), and kept only if two
+  * planes meeting at an edge do not explain it and its quadric shows no bend.
+  * \return planes seeded */
+std::size_t
+seedThickGroups (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                 const std::vector<PlanarPatch>& groups, std::vector<PlanarPatch>& patches,
+                 std::vector<std::uint32_t>& labels)
 {
-  plane.joined = true;
-  plane.retested = true;
-  return !bentAtAnEdge (points, plane.members, params) && isFlatPatch (points, params, plane, false);
+  std::vector<double> band = noiseBands (points, params, patches);
+  const auto unbent = [&] (PlanarPatch& plane) {
+    plane.joined = true;
+    plane.retested = true;
+    return !bentAtAnEdge (points, plane.members, params) && isFlatPatch (points, params, plane, false);
+  };
+  std::size_t seeded = 0;
+  for (const auto& group : groups)
+    seeded += seedLeftSamples (points, graph, params, group.members, unbent, patches, band, labels);
+  return seeded;
 }
 
 /** One round of a pass that offers unlabelled samples to planes: sample open[j] joins plane
@@ -565,13 +576,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // Groups of thick cells (departure, see DetectorParameters::join_thick_cells), on what growth
     // left of them: a group is noisier than the cells seeded, and seeded with them it competed with
     // their growth (synpeb_pc01 0.9149 -> 0.9115, one more fragment, and rotations moved it by 0.008).
-    std::vector<double> band = noiseBands (points, params, patches);
-    std::size_t seeded = 0;
-    const auto unbent = [&] (PlanarPatch& plane) { return acceptThickGroup (points, params, plane); };
-    for (const auto& group : joined)
-      seeded += seedLeftSamples (points, graph, params, group.members, unbent, patches, band, labels);
-    st.joined_seeds = seeded;
-    if (seeded > 0)
+    st.joined_seeds = seedThickGroups (points, graph, params, joined, patches, labels);
+    if (st.joined_seeds > 0)
       growMergeUntilStable (points, graph, params, patches, labels, flags, st);
   }
 
@@ -675,10 +681,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // of an edge band between a riser's small seed and its treads joined the riser, whose plane
     // the bend of those members then dropped whole (the staircase at 50,000 points, seed 5).
     labels = labelSamples (points.size (), patches);
-    std::vector<double> band = noiseBands (points, params, patches);
-    const auto unbent = [&] (PlanarPatch& plane) { return acceptThickGroup (points, params, plane); };
-    for (const auto& group : joined_left)
-      st.small_joined_seeds += seedLeftSamples (points, graph, params, group.members, unbent, patches, band, labels);
+    st.small_joined_seeds = seedThickGroups (points, graph, params, joined_left, patches, labels);
     st.small_seeds += st.small_joined_seeds;
     if (st.small_joined_seeds > 0)
     {
