@@ -1,8 +1,9 @@
 /*
- * pcl_rspd: the growth phase (Sec. 3.3, Algorithm 2).
+ * pcl_rspd: the growth phase (Sec. 3.3, Algorithm 2) and re-estimation after growth (Sec. 3.5).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/normal_estimation.h> // resolveThreads
 
 #include <algorithm>
 #include <numeric>
@@ -80,6 +81,43 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
     patch.grown = flags != nullptr;
   }
   return added;
+}
+
+std::size_t
+reestimateGrownPatches (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
+                        std::size_t* kept)
+{
+  std::size_t updated = 0, refused = 0;
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (patches.size ());
+  // Patches are independent: one per task (the big ones dominate, hence dynamic scheduling).
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : updated, refused) num_threads(resolveThreads (params.num_threads))
+  for (std::ptrdiff_t p = 0; p < count; ++p)
+  {
+    PlanarPatch& patch = patches[p];
+    const double limit = (1.0 + params.update_growth_ratio) * static_cast<double> (patch.estimate_size);
+    if (!(static_cast<double> (patch.members.size ()) > limit))
+      continue;
+    ++updated;
+    PlaneEstimate estimate;
+    if (!estimatePlane (points, patch.members, params, estimate))
+    {
+      patch.estimate_size = patch.members.size (); // keep the old plane; do not retry forever
+      continue;
+    }
+    // A noisy seed's plane whose new MND fails T2 has run onto the faces around it (see
+    // DetectorParameters::bounded_reestimation); one past T2 already has no estimate within it to keep.
+    if (params.bounded_reestimation && patch.retested && patch.mnd < params.max_normal_deviation &&
+        estimate.mnd () >= params.max_normal_deviation)
+    {
+      ++refused;
+      patch.estimate_size = patch.members.size ();
+      continue;
+    }
+    patch.setEstimate (estimate);
+  }
+  if (kept)
+    *kept = refused;
+  return updated;
 }
 
 } // namespace rspd

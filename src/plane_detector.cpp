@@ -88,31 +88,6 @@ noiseBands (const PointSet& points, const DetectorParameters& params, const std:
   return bandsOf (patches, medianDistances (points, params, patches), kBandSigmas);
 }
 
-/** Sec. 3.5: re-estimate C, N, MDP and MND of every patch that grew by more than the update ratio
-  * since its last estimate. Members are kept; T1-T3 are not re-run. \return patches updated */
-std::size_t
-reestimateGrownPatches (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
-{
-  std::size_t updated = 0;
-  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (patches.size ());
-  // Patches are independent: one per task (the big ones dominate, hence dynamic scheduling).
-#pragma omp parallel for schedule(dynamic, 1) reduction(+ : updated) num_threads(resolveThreads (params.num_threads))
-  for (std::ptrdiff_t p = 0; p < count; ++p)
-  {
-    PlanarPatch& patch = patches[p];
-    const double limit = (1.0 + params.update_growth_ratio) * static_cast<double> (patch.estimate_size);
-    if (!(static_cast<double> (patch.members.size ()) > limit))
-      continue;
-    PlaneEstimate estimate;
-    if (estimatePlane (points, patch.members, params, estimate))
-      patch.setEstimate (estimate);
-    else
-      patch.estimate_size = patch.members.size (); // keep the old plane; do not retry forever
-    ++updated;
-  }
-  return updated;
-}
-
 /** What growth left of \a samples (those no plane holds), made a plane: at least ε of them that pass
   * T1-T3 and \a accept (the plane; may mark it) and are no band layer (isBandLayer) of
   * a plane found. The outlier-seed retest and the thick-cell groups seed this way. The plane is
@@ -516,7 +491,9 @@ growMergeUntilStable (const PointSet& points, const NeighborGraph& graph, const 
     ++st.iterations;
     growPatches (points, graph, patches, labels, &flags);
     st.merges += mergePatches (points, graph, patches, labels, &flags, rules);
-    const std::size_t updated = reestimateGrownPatches (points, params, patches);
+    std::size_t kept = 0;
+    const std::size_t updated = reestimateGrownPatches (points, params, patches, &kept);
+    st.kept_estimates += kept;
     st.reestimations += updated;
     if (updated == 0)
       return;

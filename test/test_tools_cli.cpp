@@ -218,6 +218,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_bounded_on.pcd", {"--bounded-reestimate", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_support_on.pcd", {"--support", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_left_pca.pcd", {"--left-normals", "pca"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_left_trimmed.pcd", {"--left-normals=trimmed"}));
@@ -230,6 +231,9 @@ TEST (SegmentCli, DepartureSwitches)
   // Bends tested against noise (the default) keep faces of sparse boxes.
   ASSERT_EQ (runTool (make, {"boxes", dir.file ("b"), "-n", "30000"}).status, 0);
   EXPECT_FALSE (labels ("b.pcd", "boxes.pcd", {}) == labels ("b.pcd", "boxes_share.pcd", {"--bend-test", "share"}));
+  // Noisy seeds' planes kept within T2 (the default) change sparser boxes' labels.
+  ASSERT_EQ (runTool (make, {"boxes", dir.file ("b10"), "-n", "10000"}).status, 0);
+  EXPECT_FALSE (labels ("b10.pcd", "b10_out.pcd", {}) == labels ("b10.pcd", "b10_paper.pcd", {"--bounded-reestimate=off"}));
   // Outlier seeds tested again (the default) change a 60,000-point staircase's labels.
   ASSERT_EQ (runTool (make, {"staircase", dir.file ("s"), "-n", "60000"}).status, 0);
   const std::string stairs = labels ("s.pcd", "stairs.pcd", {});

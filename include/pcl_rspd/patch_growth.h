@@ -1,5 +1,5 @@
 /*
- * pcl_rspd: the growth phase (Sec. 3.3, Algorithm 2).
+ * pcl_rspd: the growth phase (Sec. 3.3, Algorithm 2) and re-estimation after growth (Sec. 3.5).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #pragma once
@@ -8,6 +8,7 @@
 #include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/point_set.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -55,6 +56,19 @@ enum SampleFlag : std::uint8_t
 std::size_t
 growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
              std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags = nullptr);
+
+/** \brief Sec. 3.5: re-estimate C, N, MDP and MND of every patch that grew by more than
+  * DetectorParameters::update_growth_ratio since its last estimate. Members are kept; T1-T3 are not
+  * re-run, but with DetectorParameters::bounded_reestimation a plane a noisy seed seeded keeps its
+  * last estimate when the new one fails T2. Thread-count independent (patches are independent).
+  * \param[in] points samples
+  * \param[in] params constants
+  * \param[in,out] patches patches; each one measured is marked as estimated at its current size
+  * \param[out] kept if not null: re-estimates refused as failing T2
+  * \return patches measured (updated or kept) */
+std::size_t
+reestimateGrownPatches (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
+                        std::size_t* kept = nullptr);
 
 } // namespace rspd
 } // namespace pcl

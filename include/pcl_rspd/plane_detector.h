@@ -242,6 +242,15 @@ struct DetectorParameters
     * samples claimed either way) and cost synpeb_pc01 0.021 of F1; it stays for scenes where curved
     * surfaces are the majority and their seeds are no outliers. false = the paper. */
   bool curved_plane_check = false;
+  /** \brief Departure (re-estimation within T2, Sec. 3.5): a plane a noisy seed seeded
+    * (PlanarPatch::retested) keeps its last estimate when a re-estimate's MND fails T2 (at least
+    * max_normal_deviation, 60°), as the paper's test would fail the plane itself. Such a seed's MND
+    * is wide; growth takes samples of the faces around it, each re-estimate widens MND and MDP by
+    * their normals, and the plane runs away: the boxes at 10,000 points on PCL's k = 50 normals got
+    * one plane over a whole box, five faces, MND 173° and MDP 0.81 m. The planes the paper seeds
+    * (split seeds that passed T1-T3 among their peers) are re-estimated as the paper says. false =
+    * the paper (every re-estimate taken). */
+  bool bounded_reestimation = true;
   /** \brief Safety cap on grow-merge iterations (Sec. 3.5); hitting it is logged. */
   int max_iterations = 100;
   /** \brief Octree depth cap: subdivision also stops where all samples of a cell coincide. */
@@ -270,6 +279,7 @@ struct DetectorStatistics
   std::size_t retested_seeds = 0;    ///< of those, seeded again from what growth left (retest_outlier_seeds)
   int iterations = 0;                ///< grow-merge iterations
   std::size_t reestimations = 0;     ///< Sec. 3.5 updates
+  std::size_t kept_estimates = 0;    ///< of those, re-estimates refused as failing T2 (bounded_reestimation)
   std::size_t merges = 0;            ///< patches absorbed by merging
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept (both rounds)
   std::size_t small_seeds_trimmed = 0; ///< of those, seeded on trimmed normals (left_normal_refit)

@@ -99,6 +99,9 @@ struct RobustPlane
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth, and tested again
   *    on what growth left of it (setOutlierSeedRetest(false): not), seeding a plane if flat;
+  *  - re-estimation within T2 (setBoundedReestimation(false) for the paper): a plane such a noisy
+  *    seed seeded keeps its last estimate when a re-estimate's MND fails T2 (60°), where growth
+  *    onto the faces around it would otherwise widen MND and MDP until it holds a whole box;
   *  - coplanar groups, M4 (setCoplanarMerge(false) for the paper): groups join largest first and
   *    only when most of the smaller one lies in the distance band of the plane the union keeps (or
   *    of the least-squares plane of the larger group's samples), so facets of a faceted or curved
@@ -485,6 +488,15 @@ public:
   /** \brief Whether small seeds' MND is floored. */
   bool
   getSmallSeedMndFloor () const { return params_.small_seed_mnd_floor; }
+
+  /** \brief Re-estimation within T2 (default true; false = the paper): a plane a noisy seed seeded
+    * (an outlier seed tested again, a small-plane seed as noisy) keeps its last estimate when a
+    * re-estimate (Sec. 3.5) fails T2. See pcl::rspd::DetectorParameters::bounded_reestimation. */
+  void
+  setBoundedReestimation (bool enable);
+  /** \brief Whether noisy seeds' planes keep an estimate within T2. */
+  bool
+  getBoundedReestimation () const { return params_.bounded_reestimation; }
 
   /** \brief Thick cells among the left samples (default true; false = the small cells alone): the
     * small-plane pass's split also joins touching cells that fail T1 alone, as the thick-cell join

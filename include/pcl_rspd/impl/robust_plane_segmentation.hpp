@@ -411,6 +411,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSmallSeedMndFloor (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setBoundedReestimation (bool enable)
+{
+  params_.bounded_reestimation = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setSmallPassThickCellJoin (bool enable)
 {
   params_.small_cell_thick_join = enable;
