@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -96,6 +96,9 @@ const char* const kHelp =
     "  --bounded-reestimate on|off  a plane a noisy seed seeded keeps its last estimate when a\n"
     "                   re-estimate's normal spread fails the paper's 60 degree test (default on;\n"
     "                   off = the paper: every re-estimate taken)\n"
+    "  --noisy-bent-split on|off  such a plane that is not flat once grown, but that two flat\n"
+    "                   planes meeting at an edge explain, is split into them (default on;\n"
+    "                   off = it is dropped)\n"
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
     "  --bend-test noise|share  a noisy seed or plane is flat unless a quadric explains more of\n"
@@ -142,6 +145,7 @@ struct Options
   bool drop_outlier_seeds = true;
   bool retest_outlier_seeds = true;
   bool bounded_reestimate = true;
+  bool noisy_bent_split = true;
   bool dominant_frame = true;
   bool trimmed_normals = false;
   pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Tails;
@@ -251,6 +255,8 @@ parseArguments (int argc, char** argv)
       o.dominant_frame = option.choice ("planes", "axes");
     else if (arg == "--bounded-reestimate")
       o.bounded_reestimate = option.choice ("on", "off");
+    else if (arg == "--noisy-bent-split")
+      o.noisy_bent_split = option.choice ("on", "off");
     else if (arg == "--outlier-seeds")
     {
       const std::string v = value ();
@@ -416,6 +422,7 @@ run (const Options& o)
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setOutlierSeedRetest (o.retest_outlier_seeds);
   seg.setBoundedReestimation (o.bounded_reestimate);
+  seg.setNoisyPlaneBentSplit (o.noisy_bent_split);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);
   seg.setDetectionFrame (o.dominant_frame ? pcl::rspd::DetectionFrame::DominantPlanes
                                           : pcl::rspd::DetectionFrame::InputAxes);
@@ -438,10 +445,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
        "pass (%zu by groups of its thick cells, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face), %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

@@ -5,6 +5,7 @@
 #include <pcl_rspd/bent_planes.h>
 #include <pcl_rspd/normal_estimation.h>  // resolveThreads
 #include <pcl_rspd/patch_growth.h>       // labelSamples, kNoPatch
+#include <pcl_rspd/plane_curvature.h>    // isFlatPatch
 #include <pcl_rspd/robust_statistics.h> // medianInPlace, kMadScale
 
 #include <Eigen/Eigenvalues>
@@ -311,6 +312,44 @@ splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::
         ++added;
       }
     }
+  }
+  return added;
+}
+
+std::size_t
+splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+{
+  std::size_t added = 0;
+  const std::size_t count = patches.size ();
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    if (!patches[p].retested || isFlatPatch (points, params, patches[p], true))
+      continue;
+    HingeFit fit;
+    if (!fitHinge (points, patches[p].members, fit) || !isBend (fit, params) ||
+        fit.parts[0].size () < params.min_patch_size || fit.parts[1].size () < params.min_patch_size)
+      continue;
+    PlanarPatch sides[2];
+    bool flat = true;
+    for (int k = 0; k < 2 && flat; ++k)
+    {
+      std::sort (fit.parts[k].begin (), fit.parts[k].end ());
+      sides[k].members = std::move (fit.parts[k]);
+      sides[k].first_index = sides[k].members.front ();
+      sides[k].retested = true; // judged as the plane it comes from
+      PlaneEstimate estimate;
+      flat = estimatePlane (points, sides[k].members, params, estimate);
+      if (flat)
+      {
+        sides[k].setEstimate (estimate);
+        flat = isFlatPatch (points, params, sides[k], true);
+      }
+    }
+    if (!flat)
+      continue; // a facet of a curved surface, or worse: the judgement drops it
+    patches[p] = std::move (sides[0]);
+    patches.push_back (std::move (sides[1]));
+    ++added;
   }
   return added;
 }

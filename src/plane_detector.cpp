@@ -645,6 +645,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // A plane an outlier seed or a group of thick cells seeded: grown, it has the samples its seed
     // may have lacked to show a bend, and it must still be flat (at 10,000 points a pipe is sampled
     // a few times around, and its facets' seeds are too small to tell).
+    if (params.noisy_bent_split)
+      st.noisy_bent_planes += splitBentNoisyPlanes (points, params, patches);
     patches.erase (std::remove_if (patches.begin (), patches.end (),
                                    [&] (const PlanarPatch& p) { return p.retested && !isFlatPatch (points, params, p, true); }),
                    patches.end ());
@@ -663,6 +665,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     if (st.small_joined_seeds > 0)
     {
       growMergeUntilStable (points, graph, params, patches, labels, flags, st);
+      if (params.noisy_bent_split)
+        st.noisy_bent_planes += splitBentNoisyPlanes (points, params, patches);
       patches.erase (std::remove_if (patches.begin (), patches.end (),
                                      [&] (const PlanarPatch& p) {
                                        return p.members.size () < params.min_patch_size ||

@@ -5,12 +5,14 @@
 #include "test_helpers.h"
 
 #include <pcl_rspd/bent_planes.h>
+#include <pcl_rspd/plane_curvature.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <random>
 #include <set>
 
 using namespace pcl::rspd;
@@ -344,4 +346,59 @@ TEST (BentPlanes, FacesAtAnEdgeAStepOrAGapStayApart)
   Halves gap = makeHalves (0.005f, 0.0f, 0.0f, 0.1f);
   EXPECT_EQ (joinSplitFaces (gap.set, gap.graph, parameters (), gap.planes, {1, 1}), 0u);
   EXPECT_EQ (gap.planes.size (), 2u);
+}
+
+TEST (BentPlanes, NoisySeedsPlaneOverAnEdgeIsSplitIntoFlatSides)
+{
+  // A noisy seed's plane grown over a 40° roof is no flat plane; its two sides are.
+  Roof roof = makeRoof (40.0f * kDegree, 0.005f);
+  auto planes = onePlane (roof.set.size ());
+  planes[0].retested = true;
+  EXPECT_EQ (splitBentNoisyPlanes (roof.set, parameters (), planes), 1u);
+  ASSERT_EQ (planes.size (), 2u);
+  for (const auto& plane : planes)
+  {
+    EXPECT_TRUE (plane.retested);
+    EXPECT_TRUE (std::is_sorted (plane.members.begin (), plane.members.end ()));
+    std::size_t on_face0 = 0;
+    for (const auto i : plane.members)
+      on_face0 += std::binary_search (roof.faces[0].begin (), roof.faces[0].end (), i);
+    const std::size_t most = std::max (on_face0, plane.members.size () - on_face0);
+    EXPECT_GE (most, plane.members.size () * 95 / 100);
+    EXPECT_GE (most, roof.faces[0].size () * 90 / 100);
+  }
+  // The planes the split seeded are left to the bent-plane split; a flat roof is no bend.
+  auto seeded = onePlane (roof.set.size ());
+  EXPECT_EQ (splitBentNoisyPlanes (roof.set, parameters (), seeded), 0u);
+  EXPECT_EQ (seeded.size (), 1u);
+  Roof flat = makeRoof (0.0f, 0.005f);
+  auto flat_plane = onePlane (flat.set.size ());
+  flat_plane[0].retested = true;
+  EXPECT_EQ (splitBentNoisyPlanes (flat.set, parameters (), flat_plane), 0u);
+}
+
+TEST (BentPlanes, NoisySeedsPlaneOnACylinderIsNotSplit)
+{
+  // A 120° arc of a 0.3 m cylinder: two chords explain it better than one plane, but each still
+  // bends, so the plane is left to the judgement that drops it.
+  PointSet s;
+  std::mt19937 rng (3);
+  std::normal_distribution<float> noise (0.0f, 0.001f);
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j)
+    {
+      const float a = (-60.0f + 120.0f * (i + 0.5f) / 60.0f) * kDegree;
+      const Eigen::Vector3f radial (std::sin (a), 0.0f, std::cos (a));
+      s.points.push_back ((0.3f + noise (rng)) * radial + Eigen::Vector3f (0.0f, 0.6f * (j + 0.5f) / 60.0f, 0.0f));
+      s.normals.push_back (radial);
+      s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+    }
+  HingeFit fit;
+  ASSERT_TRUE (fitHinge (s, onePlane (s.size ())[0].members, fit));
+  EXPECT_TRUE (isBend (fit, parameters ()));
+  auto planes = onePlane (s.size ());
+  planes[0].retested = true;
+  EXPECT_FALSE (isFlatPatch (s, parameters (), planes[0], true));
+  EXPECT_EQ (splitBentNoisyPlanes (s, parameters (), planes), 0u);
+  EXPECT_EQ (planes.size (), 1u);
 }

@@ -80,6 +80,23 @@ std::size_t
 splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
                  std::vector<char>* split = nullptr);
 
+/** \brief Bent planes among noisy seeds' planes (departure, DetectorParameters::noisy_bent_split):
+  * before a plane a noisy seed seeded (PlanarPatch::retested) is judged flat once grown, one that is
+  * not flat (isFlatPatch) is split at fitHinge's cut when the cut is a bend (isBend), each side has
+  * at least ε samples and each side is flat once grown (a retested plane each); what is still not flat
+  * is then dropped by that judgement. Such a plane's MND is wide and growth carries it over an edge
+  * onto the next face, whose samples bend it: it was dropped whole, and the bent-plane split, which
+  * runs later, never saw it (the boxes at 10,000 points on PCL's k = 50 normals, faces of 40-120
+  * samples). A facet of a pipe cut in two leaves halves that still bend, and is dropped as before.
+  * Planes are taken in order; the result does not depend on the thread count.
+  * \param[in] points samples
+  * \param[in] params constants (ε, T1's angle, bent_sigma_ratio, bend_confidence, min_curvature_share)
+  * \param[in,out] patches planes; a split plane keeps its place for the side below the cut and the
+  * other side is appended, each estimated again (Eqs. 3-9)
+  * \return planes added */
+std::size_t
+splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches);
+
 /** \brief Bent planes, second step: join again a face that two bent planes shared.
   *
   * Where growth carried two planes across their edges onto the same face (synpeb_pc01: a box face

@@ -215,6 +215,11 @@ struct DetectorParameters
     * that are one face are joined again (joinSplitFaces). With noisy normals MND is wide, and growth
     * and re-estimation carry a plane over an edge onto the next face. false = the paper. */
   bool bent_plane_split = true;
+  /** \brief Departure (bent noisy planes, see splitBentNoisyPlanes): where a plane a noisy seed
+    * seeded is judged flat once grown, one that is not but that two flat planes meeting at an edge
+    * explain is split into them instead of dropped. false = it is dropped (and the paper seeds no
+    * such plane). */
+  bool noisy_bent_split = true;
   /** \brief Bent planes: the largest ratio of the two planes' robust σ to the one plane's that counts as
     * a bend (0.8; fitHinge's search on flat noisy planes stays above 0.85). */
   double bent_sigma_ratio = 0.8;
@@ -293,6 +298,7 @@ struct DetectorStatistics
   std::size_t split_planes = 0;      ///< planes added by splitting planes into connected parts (connected_parts)
   std::size_t bent_planes = 0;       ///< planes added by splitting bent planes at their edge (bent_plane_split)
   std::size_t bent_joined = 0;       ///< of the planes then, those joined to another as one face (joinSplitFaces)
+  std::size_t noisy_bent_planes = 0; ///< noisy seeds' planes split at an edge before they are judged flat (noisy_bent_split)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)

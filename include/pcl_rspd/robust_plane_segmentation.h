@@ -102,6 +102,8 @@ struct RobustPlane
   *  - re-estimation within T2 (setBoundedReestimation(false) for the paper): a plane such a noisy
   *    seed seeded keeps its last estimate when a re-estimate's MND fails T2 (60°), where growth
   *    onto the faces around it would otherwise widen MND and MDP until it holds a whole box;
+  *  - bent noisy planes (setNoisyPlaneBentSplit(false): dropped): such a plane that is not flat
+  *    once grown but that two flat planes meeting at an edge explain is split into them;
   *  - coplanar groups, M4 (setCoplanarMerge(false) for the paper): groups join largest first and
   *    only when most of the smaller one lies in the distance band of the plane the union keeps (or
   *    of the least-squares plane of the larger group's samples), so facets of a faceted or curved
@@ -497,6 +499,15 @@ public:
   /** \brief Whether noisy seeds' planes keep an estimate within T2. */
   bool
   getBoundedReestimation () const { return params_.bounded_reestimation; }
+
+  /** \brief Bent noisy planes (default true; false = dropped): a plane a noisy seed seeded that is
+    * not flat once grown, but that two flat planes meeting at an edge explain, is split into them
+    * rather than dropped. See pcl::rspd::DetectorParameters::noisy_bent_split. */
+  void
+  setNoisyPlaneBentSplit (bool enable);
+  /** \brief Whether bent noisy planes are split rather than dropped. */
+  bool
+  getNoisyPlaneBentSplit () const { return params_.noisy_bent_split; }
 
   /** \brief Thick cells among the left samples (default true; false = the small cells alone): the
     * small-plane pass's split also joins touching cells that fail T1 alone, as the thick-cell join

@@ -418,6 +418,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setBoundedReestimation (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNoisyPlaneBentSplit (bool enable)
+{
+  params_.noisy_bent_split = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setSmallPassThickCellJoin (bool enable)
 {
   params_.small_cell_thick_join = enable;
