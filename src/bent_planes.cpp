@@ -317,14 +317,19 @@ splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::
 }
 
 std::size_t
-splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
+                      std::vector<char>* flat_out)
 {
   std::size_t added = 0;
   const std::size_t count = patches.size ();
+  std::vector<char> local;
+  std::vector<char>& judged = flat_out ? *flat_out : local;
+  judged.assign (count, 1);
   for (std::size_t p = 0; p < count; ++p)
   {
     if (!patches[p].retested || isFlatPatch (points, params, patches[p], true))
       continue;
+    judged[p] = 0;
     HingeFit fit;
     if (!fitHinge (points, patches[p].members, fit) || !isBend (fit, params) ||
         fit.parts[0].size () < params.min_patch_size || fit.parts[1].size () < params.min_patch_size)
@@ -349,6 +354,8 @@ splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, 
       continue; // a facet of a curved surface, or worse: the judgement drops it
     patches[p] = std::move (sides[0]);
     patches.push_back (std::move (sides[1]));
+    judged[p] = 1;
+    judged.push_back (1);
     ++added;
   }
   return added;

@@ -280,6 +280,35 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   }
 }
 
+/** The planes noisy seeds seeded, judged once grown: split where two flat planes meeting at an
+  * edge explain one that is not flat (DetectorParameters::noisy_bent_split), then every one still
+  * not flat dropped, with every plane under \a min_size samples. Each plane's flatness is measured
+  * once. */
+void
+judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::size_t min_size,
+                  std::vector<PlanarPatch>& patches, DetectorStatistics& st)
+{
+  std::vector<char> flat;
+  if (params.noisy_bent_split)
+    st.noisy_bent_planes += splitBentNoisyPlanes (points, params, patches, &flat);
+  else
+  {
+    flat.resize (patches.size ());
+    for (std::size_t p = 0; p < patches.size (); ++p)
+      flat[p] = !patches[p].retested || isFlatPatch (points, params, patches[p], true);
+  }
+  std::size_t kept = 0;
+  for (std::size_t p = 0; p < patches.size (); ++p)
+  {
+    if (!flat[p] || patches[p].members.size () < min_size)
+      continue;
+    if (kept != p)
+      patches[kept] = std::move (patches[p]);
+    ++kept;
+  }
+  patches.resize (kept);
+}
+
 /** Drop every plane that is a facet of a curved surface (departure, see
   * DetectorParameters::min_curvature_share). \return planes dropped */
 std::size_t
@@ -645,11 +674,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // A plane an outlier seed or a group of thick cells seeded: grown, it has the samples its seed
     // may have lacked to show a bend, and it must still be flat (at 10,000 points a pipe is sampled
     // a few times around, and its facets' seeds are too small to tell).
-    if (params.noisy_bent_split)
-      st.noisy_bent_planes += splitBentNoisyPlanes (points, params, patches);
-    patches.erase (std::remove_if (patches.begin (), patches.end (),
-                                   [&] (const PlanarPatch& p) { return p.retested && !isFlatPatch (points, params, p, true); }),
-                   patches.end ());
+    judgeNoisyPlanes (points, params, 0, patches, st);
     labels = labelSamples (points.size (), patches);
   }
   if (!joined_left.empty () && !patches.empty ())
@@ -665,14 +690,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     if (st.small_joined_seeds > 0)
     {
       growMergeUntilStable (points, graph, params, patches, labels, flags, st);
-      if (params.noisy_bent_split)
-        st.noisy_bent_planes += splitBentNoisyPlanes (points, params, patches);
-      patches.erase (std::remove_if (patches.begin (), patches.end (),
-                                     [&] (const PlanarPatch& p) {
-                                       return p.members.size () < params.min_patch_size ||
-                                              (p.retested && !isFlatPatch (points, params, p, true));
-                                     }),
-                     patches.end ());
+      judgeNoisyPlanes (points, params, params.min_patch_size, patches, st);
       labels = labelSamples (points.size (), patches);
     }
   }

@@ -93,9 +93,13 @@ splitBentPlanes (const PointSet& points, const DetectorParameters& params, std::
   * \param[in] params constants (ε, T1's angle, bent_sigma_ratio, bend_confidence, min_curvature_share)
   * \param[in,out] patches planes; a split plane keeps its place for the side below the cut and the
   * other side is appended, each estimated again (Eqs. 3-9)
+  * \param[out] flat if not null: per plane (after the split), whether it is flat once grown (true
+  * for a plane no noisy seed seeded, and for both sides of a split), so that the judgement need
+  * not measure it again
   * \return planes added */
 std::size_t
-splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches);
+splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
+                      std::vector<char>* flat = nullptr);
 
 /** \brief Bent planes, second step: join again a face that two bent planes shared.
   *
