@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -53,9 +53,10 @@ const char* const kHelp =
     "                   default); ignored when the input has normals\n"
     "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
-    "  --left-normals trimmed|pca  the small-plane pass splits the points it left a second\n"
-    "                   time, on the normals of their neighbourhoods' trimmed planes ('trimmed',\n"
-    "                   for normals estimated here by PCA); 'pca' does not (the default, the paper)\n"
+    "  --left-normals auto|trimmed|pca  the small-plane pass splits the points it left a\n"
+    "                   second time, on the normals of their neighbourhoods' trimmed planes:\n"
+    "                   'auto' (the default) with the input's normals only, 'trimmed' with\n"
+    "                   normals estimated here by PCA too, 'pca' never (the paper)\n"
     "  --rim-retest on|off  in the small-plane pass, a cell failing only T3 is tested again on\n"
     "                   its inliers and may seed a plane (default on; off = it seeds nothing)\n"
     "  --release on|off once growth is stable, members farther than 3 robust sigma from their\n"
@@ -116,6 +117,14 @@ const char* const kHelp =
     "Exit status: 0 success, 1 bad input or output, 2 usage error.\n";
 
 /** \brief Command line. */
+/** Which normals the small-plane pass's second split refits (--left-normals). */
+enum class LeftNormals
+{
+  Auto,    ///< the input's normals only
+  Trimmed, ///< the input's and those estimated here
+  Pca      ///< none
+};
+
 struct Options
 {
   std::string input;
@@ -137,7 +146,7 @@ struct Options
   bool thick_join = true;
   bool small_thick_join = true;
   bool support = true;
-  bool left_normals = false;
+  LeftNormals left_normals = LeftNormals::Auto;
   bool connected_parts = true;
   bool bent_split = true;
   bool curved_check = false;
@@ -242,7 +251,17 @@ parseArguments (int argc, char** argv)
     else if (arg == "--step-sides")
       o.step_sides = option.choice ("on", "off");
     else if (arg == "--left-normals")
-      o.left_normals = option.choice ("trimmed", "pca");
+    {
+      const std::string v = value ();
+      if (v == "auto")
+        o.left_normals = LeftNormals::Auto;
+      else if (v == "trimmed")
+        o.left_normals = LeftNormals::Trimmed;
+      else if (v == "pca")
+        o.left_normals = LeftNormals::Pca;
+      else
+        throw UsageError{"--left-normals needs 'auto', 'trimmed' or 'pca' (got '" + v + "')"};
+    }
     else if (arg == "--support")
       o.support = option.choice ("on", "off");
     else if (arg == "--connected-parts")
@@ -414,7 +433,8 @@ run (const Options& o)
   seg.setThickCellJoin (o.thick_join);
   seg.setSmallPassThickCellJoin (o.small_thick_join);
   seg.setSupportCheck (o.support);
-  seg.setLeftNormalRefit (o.left_normals);
+  seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
+  seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);
   seg.setConnectedParts (o.connected_parts);
   seg.setBentPlaneSplit (o.bent_split);
   seg.setCurvedPlaneCheck (o.curved_check);

@@ -80,5 +80,28 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorP
   return layer;
 }
 
+bool
+liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
+                      const std::vector<std::uint32_t>& labels, const PlanarPatch& candidate)
+{
+  if (candidate.members.empty ())
+    return false;
+  std::vector<std::uint32_t> beside;
+  for (const auto i : candidate.members)
+    graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+      if (labels[j] != kNoPatch)
+        beside.push_back (labels[j]);
+    });
+  std::sort (beside.begin (), beside.end ());
+  beside.erase (std::unique (beside.begin (), beside.end ()), beside.end ());
+  if (beside.empty ())
+    return false;
+  const double own = robustSigmaAbout (points, candidate.members, candidate.center, candidate.normal);
+  for (const auto o : beside)
+    if (robustSigmaAbout (points, candidate.members, patches[o].center, patches[o].normal) <= own)
+      return true;
+  return false;
+}
+
 } // namespace rspd
 } // namespace pcl

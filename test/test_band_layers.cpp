@@ -1,5 +1,6 @@
 /*
- * Tests of the band-layer test of the small-plane pass (isBandLayer).
+ * Tests of the band-layer test of the small-plane pass (isBandLayer) and of a released group lying
+ * on a neighbouring plane (liesOnNeighbourPlane).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
@@ -160,4 +161,63 @@ TEST (BandLayer, EmptySeedIsNoLayer)
   Scene s = makeScene (0.0, 0.01, 0.003f, 0.03, false);
   s.seed.members.clear ();
   EXPECT_FALSE (isBandLayer (s.set, s.graph, parameters (), s.planes, s.band, s.labels, s.seed));
+}
+
+namespace
+{
+/** A tread: the plane z = 0 on 1 x 0.9 m (40 x 36 samples, noise 2 mm), held by one plane, and a
+  * strip along its nose, x from 1 on, 4 x 36 samples on 0.1 x 0.9 m, lowered by \a drop, none held:
+  * the candidate, its center on the strip and its normal tilted by \a tilt about the y axis. */
+struct Strip
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<std::uint32_t> labels;
+  PlanarPatch candidate;
+  NeighborGraph graph;
+};
+
+Strip
+makeStrip (double tilt, float drop)
+{
+  Strip s;
+  const std::vector<std::uint32_t> tread =
+      rspd_test::addRectangle (s.set, {0, 0, 0}, {0.975f, 0, 0}, {0, 0.9f, 0}, 40, 36, 0.002f, 1);
+  const std::vector<std::uint32_t> strip =
+      rspd_test::addRectangle (s.set, {1.0f, 0, -drop}, {0.075f, 0, 0}, {0, 0.9f, 0}, 4, 36, 0.002f, 2);
+  s.planes = {rspd_test::makePatch (tread, {0.5, 0.45, 0}, {0, 0, 1}, 0.01, 0.05)};
+  s.labels.assign (s.set.points.size (), kNoPatch);
+  for (const auto i : tread)
+    s.labels[i] = 0;
+  s.candidate = rspd_test::makePatch (strip, {1.04, 0.45, -drop}, {std::sin (tilt), 0, std::cos (tilt)}, 0.01, 0.3);
+  s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
+  return s;
+}
+} // namespace
+
+TEST (NeighbourPlane, StripAlongANoseWithABentNormalLiesOnTheTread)
+{
+  // The staircase's top tread on PCL's k = 50 normals: released along the nose, the strip's median
+  // normal tilted 22°; the tread's plane fits its positions better than its own.
+  const Strip s = makeStrip (22.0 * kDegree, 0.0f);
+  EXPECT_TRUE (liesOnNeighbourPlane (s.set, s.graph, s.planes, s.labels, s.candidate));
+  // Its own plane right: as close to the tread's, which counts for the tread.
+  const Strip flat = makeStrip (0.0, 0.0f);
+  EXPECT_TRUE (liesOnNeighbourPlane (flat.set, flat.graph, flat.planes, flat.labels, flat.candidate));
+}
+
+TEST (NeighbourPlane, RecessedStripLiesOnItsOwnPlane)
+{
+  // A window 5 cm behind its wall: the wall's plane is 25 times farther than its own noise.
+  const Strip s = makeStrip (0.0, 0.05f);
+  EXPECT_FALSE (liesOnNeighbourPlane (s.set, s.graph, s.planes, s.labels, s.candidate));
+}
+
+TEST (NeighbourPlane, NoPlaneBesideOrNoMembers)
+{
+  Strip s = makeStrip (22.0 * kDegree, 0.0f);
+  std::vector<std::uint32_t> none (s.labels.size (), kNoPatch);
+  EXPECT_FALSE (liesOnNeighbourPlane (s.set, s.graph, s.planes, none, s.candidate));
+  s.candidate.members.clear ();
+  EXPECT_FALSE (liesOnNeighbourPlane (s.set, s.graph, s.planes, s.labels, s.candidate));
 }

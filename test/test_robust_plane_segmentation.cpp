@@ -499,7 +499,7 @@ TEST (RobustPlaneSegmentation, GivenNormalsAreUsed)
     EXPECT_GT (pi.indices.size (), 1900u); // exact normals: nearly every sample joins
 }
 
-TEST (RobustPlaneSegmentation, LeftNormalRefitIsOffByDefaultAndSwitchable)
+TEST (RobustPlaneSegmentation, LeftNormalRefitIsOnForGivenNormalsOffForOwnAndSwitchable)
 {
   // 60,000 samples: ε = 60, so the small-plane pass (cells down to 30) runs.
   std::vector<int> truth;
@@ -519,13 +519,14 @@ TEST (RobustPlaneSegmentation, LeftNormalRefitIsOffByDefaultAndSwitchable)
   ASSERT_EQ (off.size (), 3u);
   EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
   EXPECT_EQ (seg.getStatistics ().small_seeds_trimmed, 0u);
-  // Not with trimmed normals everywhere, nor with the caller's normals (used as given).
+  // Not with trimmed normals everywhere.
   seg.setLeftNormalRefit (true);
   seg.setNormalFit (pcl::rspd::NormalFit::TrimmedPlane);
   seg.segment (c, off);
   ASSERT_EQ (off.size (), 3u);
   EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
   seg.setNormalFit (pcl::rspd::NormalFit::Pca);
+  // The caller's normals have a switch of their own, on by default, whatever setLeftNormalRefit says.
   auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
   for (std::size_t i = 0; i < cloud->size (); ++i)
   {
@@ -534,9 +535,19 @@ TEST (RobustPlaneSegmentation, LeftNormalRefitIsOffByDefaultAndSwitchable)
     normals->push_back (n);
   }
   seg.setInputNormals (normals);
+  seg.setLeftNormalRefit (false);
+  EXPECT_TRUE (seg.getLeftNormalRefitOnGivenNormals ());
+  seg.segment (c, on);
+  ASSERT_EQ (on.size (), 3u);
+  EXPECT_GT (seg.getStatistics ().left_refitted, 0u);
+  seg.setLeftNormalRefit (true);
+  seg.setLeftNormalRefitOnGivenNormals (false);
+  EXPECT_FALSE (seg.getLeftNormalRefitOnGivenNormals ());
   seg.segment (c, off);
   ASSERT_EQ (off.size (), 3u);
   EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
+  for (std::size_t p = 0; p < on.size (); ++p) // exact normals: the refit seeds nothing more
+    EXPECT_EQ (on[p].indices, off[p].indices);
 }
 
 TEST (RobustPlaneSegmentation, DeterministicAcrossRunsAndThreads)

@@ -221,6 +221,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_bounded_on.pcd", {"--bounded-reestimate", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_support_on.pcd", {"--support", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_left_pca.pcd", {"--left-normals", "pca"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_left_auto.pcd", {"--left-normals", "auto"})); // no normals in the file
   EXPECT_FALSE (room == labels ("r.pcd", "room_left_trimmed.pcd", {"--left-normals=trimmed"}));
   // The plane support releases the facade's in-band outliers beyond its rims.
   ASSERT_EQ (runTool (make, {"facade", dir.file ("f"), "-n", "60000"}).status, 0);

@@ -110,14 +110,17 @@ struct DetectorParameters
     * the pass's split on the PCA normals, the samples still left get the normal of their
     * k-neighbourhood's reweighted least-trimmed-squares plane (refineNormalsTrimmed) in a copy, and
     * are split a second time on those, with the same tests for a seed (its MND at most the largest
-    * MND of the planes found, no layer of one). Growth and every later pass read the PCA normals.
+    * MND of the planes found, no layer of one) and one more: no thicker (MDP) than the thickest plane
+    * found (trimmed normals of scattered outliers agree by chance over a slab). Growth and every later
+    * pass read the PCA normals.
     * Near an edge a PCA normal averages both faces; on a small plane (a table's front panel, a
     * cabinet top at 100,000 points) most samples lie that near an edge, so T3 fails every cell of it
     * and the plane is never seeded. Only the left samples are refitted: refitting every sample costs
     * about twenty times the PCA normal stage. Letting growth read the trimmed normals too gained
     * more F1 but was not stable: synpeb_pc01 moved 1 km away lost 0.015 (a trimmed subset is not
-    * continuous in the positions). Off by default for its time; RobustPlaneSegmentation sets it
-    * only for normals it estimates by PCA. false = the paper. */
+    * continuous in the positions). Off by default here; RobustPlaneSegmentation sets it for the
+    * caller's normals (setLeftNormalRefitOnGivenNormals, default on) and, on request, for normals it
+    * estimates by PCA (setLeftNormalRefit, default off for its time). false = the paper. */
   bool left_normal_refit = false;
   /** \brief Departure (small planes at a rim), used by the small-cell pass only: a cell that passes
     * T1 and T2 but fails T3 is tested again on its own inliers, and seeds a plane if they pass. The
@@ -172,6 +175,14 @@ struct DetectorParameters
     * 2 cm proud of its wall that no cell seeded is released whole by the wall and would otherwise go
     * back to it. false = they all go back. */
   bool seed_released_planes = true;
+  /** \brief Departure (part of seed_released_planes): a group of released samples that lies on a
+    * neighbouring plane at least as closely as on its own (liesOnNeighbourPlane) seeds nothing; its
+    * samples go back or to the last assignment. Along an edge, the samples a plane released there
+    * have normals bent towards it, so the plane beside them, which they lie on, turns them down, and
+    * together they pass T1-T3 as a strip whose median normal is bent too: the staircase on PCL's
+    * k = 50 normals got a false plane of 205 samples along its top tread's nose, tilted 22° from it.
+    * false = every group that passes the tests becomes a plane. */
+  bool released_layer_check = true;
   /** \brief Departure (edge sides, see settleEdgeSides): after the last assignment, a sample that
     * borders another plane leaves its plane when its projection onto it lies beyond the line where
     * the two planes meet, for the other plane if that one would own it by the same rule and holds it

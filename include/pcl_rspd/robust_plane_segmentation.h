@@ -89,13 +89,15 @@ struct RobustPlane
   *    MND of the planes found (edge bands of bent normals are noisier and would bridge faces through
   *    M2) and it is not a layer of a found plane's noise band, grow-merge runs again, and planes
   *    still smaller than ε are dropped;
-  *  - trimmed normals for what growth left are available, off by default for their time
-  *    (setLeftNormalRefit(true)): that pass
+  *  - trimmed normals for what growth left (setLeftNormalRefitOnGivenNormals(false) and
+  *    setLeftNormalRefit(false) for the paper): that pass
   *    splits a second time the samples still left, on the normals of their neighbourhoods'
-  *    reweighted least-trimmed-squares planes, with the same tests for a seed;
-  *    growth and every later pass keep the PCA normals. A small plane's PCA normals bend towards its
-  *    neighbours over most of it (a table's front panel at 100,000 points), and T3 then fails every
-  *    cell of it. Only with normals estimated here by PCA;
+  *    reweighted least-trimmed-squares planes, with the same tests for a seed and one more (no
+  *    thicker than the thickest plane found); growth and every later pass keep the normals they had.
+  *    A small plane's normals bend towards its neighbours over most of it (a table's front panel at
+  *    100,000 points), and T3 then fails every cell of it. On by default for the caller's normals,
+  *    whose scale was chosen without this cloud's small planes in view and which leave the time of
+  *    a normal stage to spend; off by default for normals estimated here, for its time;
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth, and tested again
   *    on what growth left of it (setOutlierSeedRetest(false): not), seeding a plane if flat;
@@ -322,14 +324,29 @@ public:
   /** \brief Trimmed normals for what growth left (default off, for its time; false = the paper): the small-plane
     * pass splits the samples it left a second time, on the normals of their k-neighbourhoods'
     * reweighted least-trimmed-squares planes (pcl::rspd::refineNormalsTrimmed); growth and the later
-    * passes keep the PCA normals. Applies only to normals estimated here by PCA (not to normals
-    * given with setInputNormals, nor with setNormalFit(TrimmedPlane), where every normal is trimmed
-    * already). See pcl::rspd::DetectorParameters::left_normal_refit. */
+    * passes keep the PCA normals. Applies only to normals estimated here by PCA (not with
+    * setNormalFit(TrimmedPlane), where every normal is trimmed already; normals given with
+    * setInputNormals have setLeftNormalRefitOnGivenNormals). See
+    * pcl::rspd::DetectorParameters::left_normal_refit. */
   void
   setLeftNormalRefit (bool enable);
-  /** \brief Whether the left samples' normals are refitted. */
+  /** \brief Whether the left samples' normals are refitted (normals estimated here). */
   bool
   getLeftNormalRefit () const { return left_normal_refit_; }
+
+  /** \brief Trimmed normals for what growth left, with the caller's normals (setInputNormals;
+    * default on; false = the paper, and the normals used as given throughout): as
+    * setLeftNormalRefit, for the small-plane pass's second split only. The caller's normals come at
+    * a scale chosen without this cloud's small planes in view (PCL's k = 50 on 10,000 points
+    * reaches 0.4 m in a room), and with them detection skips its normal stage, which leaves time for
+    * the refit: on PCL's k = 50 normals (rspd_compare) the boxes at 10,000 points 13 → 18 of 32
+    * planes, at 20,000 25 → 28, the room at 50,000 points 9 → 11 of 12, the industrial yard at
+    * 10,000 points 5 → 6 of 6; the 300,000-point room's detection 0.43 → 0.54 s (README). */
+  void
+  setLeftNormalRefitOnGivenNormals (bool enable);
+  /** \brief Whether the left samples' normals are refitted when the caller gives normals. */
+  bool
+  getLeftNormalRefitOnGivenNormals () const { return given_normals_left_refit_; }
 
   /** \brief Rim cells in the small-plane pass (default true; false = they seed nothing): a cell that
     * passes T1 and T2 but fails T3 is tested again on its own inliers, which seed a plane if they
@@ -360,6 +377,16 @@ public:
   /** \brief Whether groups of released samples may seed planes. */
   bool
   getReleasedPlaneSeeding () const { return params_.seed_released_planes; }
+
+  /** \brief Released strips (default true; false = every group that passes T1-T3 becomes a plane):
+    * a group of released samples that lies on a neighbouring plane at least as closely as on its own
+    * seeds nothing (a strip along an edge, whose normals bend towards the plane that released it).
+    * See pcl::rspd::DetectorParameters::released_layer_check. */
+  void
+  setReleasedLayerCheck (bool enable);
+  /** \brief Whether released groups lying on a neighbouring plane are kept from seeding. */
+  bool
+  getReleasedLayerCheck () const { return params_.released_layer_check; }
 
   /** \brief Connected parts (default true; false = the paper): a plane whose members that pass its
     * inlier test at its last estimate form two or more parts of at least ε samples with no graph edge
@@ -688,6 +715,7 @@ protected:
   std::size_t min_patch_size_ = 0;
   bool small_plane_seeding_ = true;
   bool left_normal_refit_ = false;
+  bool given_normals_left_refit_ = true;
   pcl::rspd::NormalScale normal_scale_ = pcl::rspd::NormalScale::Automatic;
   pcl::rspd::DetectionFrame detection_frame_ = pcl::rspd::DetectionFrame::DominantPlanes;
   pcl::rspd::NormalFit normal_fit_ = pcl::rspd::NormalFit::Pca;

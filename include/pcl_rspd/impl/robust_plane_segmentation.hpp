@@ -299,6 +299,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setLeftNormalRefit (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setLeftNormalRefitOnGivenNormals (bool enable)
+{
+  given_normals_left_refit_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setRimCellRetest (bool enable)
 {
   params_.rim_cell_retest = enable;
@@ -316,6 +323,13 @@ template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setReleasedPlaneSeeding (bool enable)
 {
   params_.seed_released_planes = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setReleasedLayerCheck (bool enable)
+{
+  params_.released_layer_check = enable;
   invalidate ();
 }
 
@@ -653,8 +667,9 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
   params_.small_cell_size = small_plane_seeding_
       ? std::min<std::size_t> (static_cast<std::size_t> (k_used_ + 1), std::max<std::size_t> (10, params_.min_patch_size / 2))
       : 0;
-  // The caller's normals are used as given, and trimmed normals need no second fit.
-  params_.left_normal_refit = left_normal_refit_ && !normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca;
+  // Trimmed normals need no second fit; the caller's normals have a switch of their own.
+  params_.left_normal_refit =
+      normals_ ? given_normals_left_refit_ : left_normal_refit_ && normal_fit_ == pcl::rspd::NormalFit::Pca;
   return true;
 }
 
