@@ -98,8 +98,8 @@ const char* const kHelp =
     "                   re-estimate's normal spread fails the paper's 60 degree test (default on;\n"
     "                   off = the paper: every re-estimate taken)\n"
     "  --noisy-bent-split on|off  such a plane that is not flat once grown, but that two flat\n"
-    "                   planes meeting at an edge explain, is split into them (default on;\n"
-    "                   off = it is dropped)\n"
+    "                   planes meeting at an edge explain, is split into them (default off:\n"
+    "                   it is dropped)\n"
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
     "  --bend-test noise|share  a noisy seed or plane is flat unless a quadric explains more of\n"
@@ -154,7 +154,7 @@ struct Options
   bool drop_outlier_seeds = true;
   bool retest_outlier_seeds = true;
   bool bounded_reestimate = true;
-  bool noisy_bent_split = true;
+  bool noisy_bent_split = false;
   bool dominant_frame = true;
   bool trimmed_normals = false;
   pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Tails;

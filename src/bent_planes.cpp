@@ -208,6 +208,23 @@ bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples,
 
 namespace
 {
+/** Whether \a side, cut from \a whole, is a plane by T1-T3, T2 bounded by the whole's MND where
+  * that is wider than T2's (DetectorParameters::bent_side_parent_mnd). */
+bool
+isPlaneSide (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>& whole,
+             const std::vector<std::uint32_t>& side)
+{
+  const PlanarityVerdict verdict = robustPlanarityTest (points, side, params).verdict;
+  if (verdict != PlanarityVerdict::FailedNormal || !params.bent_side_parent_mnd)
+    return verdict == PlanarityVerdict::Planar;
+  PlaneEstimate parent;
+  if (!estimatePlane (points, whole, params, parent) || !(parent.mnd () > params.max_normal_deviation))
+    return false;
+  DetectorParameters bounded = params;
+  bounded.max_normal_deviation = parent.mnd ();
+  return robustPlanarityTest (points, side, bounded).verdict == PlanarityVerdict::Planar;
+}
+
 /** The leaves of \a members split at edges (see splitBentPlanes), appended to \a leaves; false, and
   * nothing appended, where \a members is no bent plane or cannot be split into planes. */
 bool
@@ -225,7 +242,7 @@ splitAtEdges (const PointSet& points, const DetectorParameters& params, const st
     // split into planes (one cut through the middle face of three leaves 1.5 faces a side).
     if (splitAtEdges (points, params, side, level + 1, found))
       continue;
-    if (robustPlanarityTest (points, side, params).verdict != PlanarityVerdict::Planar)
+    if (!isPlaneSide (points, params, members, side))
       return false;
     found.push_back (std::move (side));
   }

@@ -402,3 +402,30 @@ TEST (BentPlanes, NoisySeedsPlaneOnACylinderIsNotSplit)
   EXPECT_EQ (splitBentNoisyPlanes (s, parameters (), planes), 0u);
   EXPECT_EQ (planes.size (), 1u);
 }
+
+TEST (BentPlanes, SidesAsNoisyAsTheirPlaneArePlanesPastT2)
+{
+  // A 40° roof whose normals are as noisy as PCL's k = 50 ones on synpeb_pc01: the whole plane's MND
+  // past T2's 60° (re-estimation tests nothing again), each side's past it too but below the
+  // whole's. Held to T2 at 60°, neither side is a plane and the roof stays whole; held to the MND
+  // of the plane they come from, it is split (DetectorParameters::bent_side_parent_mnd).
+  Roof r = makeRoof (40.0f * kDegree, 0.005f);
+  std::mt19937 rng (7);
+  std::normal_distribution<float> jitter (0.0f, 0.35f);
+  for (auto& n : r.set.normals)
+    n = (n + Eigen::Vector3f (jitter (rng), jitter (rng), jitter (rng))).normalized ();
+  DetectorParameters p = parameters ();
+  PlaneEstimate whole, side;
+  ASSERT_TRUE (estimatePlane (r.set, onePlane (r.set.size ())[0].members, p, whole));
+  ASSERT_TRUE (estimatePlane (r.set, r.faces[0], p, side));
+  std::printf ("    MND whole %.1f°, one side %.1f°\n", whole.mnd () / kDegree, side.mnd () / kDegree);
+  EXPECT_GT (side.mnd (), p.max_normal_deviation);
+  EXPECT_LT (side.mnd (), whole.mnd ());
+  std::vector<PlanarPatch> bounded = onePlane (r.set.size ());
+  EXPECT_EQ (splitBentPlanes (r.set, p, bounded), 1u);
+  EXPECT_EQ (bounded.size (), 2u);
+  p.bent_side_parent_mnd = false;
+  std::vector<PlanarPatch> paper = onePlane (r.set.size ());
+  EXPECT_EQ (splitBentPlanes (r.set, p, paper), 0u);
+  EXPECT_EQ (paper.size (), 1u);
+}

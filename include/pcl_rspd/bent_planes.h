@@ -67,7 +67,9 @@ bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples,
   *  - they meet at more than 90° minus T1's angle (15° by default): T1 accepts a cell whose samples
   *    spread over that slope as one plane, so a gentler bend is what the paper calls a plane (a
   *    scanned wall that bows, or steps by its noise);
-  *  - each side has at least ε samples and passes the robust planarity test (Sec. 3.2, T1-T3).
+  *  - each side has at least ε samples and passes the robust planarity test (Sec. 3.2, T1-T3), its
+  *    T2 bounded by the MND of the plane it was cut from where that is wider than T2's 60°
+  *    (DetectorParameters::bent_side_parent_mnd).
   * The result does not depend on the thread count (planes are independent).
   * \param[in] points samples
   * \param[in] params constants (ε, T1-T3, bent_sigma_ratio, threads)

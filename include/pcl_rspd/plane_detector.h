@@ -229,8 +229,18 @@ struct DetectorParameters
   /** \brief Departure (bent noisy planes, see splitBentNoisyPlanes): where a plane a noisy seed
     * seeded is judged flat once grown, one that is not but that two flat planes meeting at an edge
     * explain is split into them instead of dropped. false = it is dropped (and the paper seeds no
-    * such plane). */
-  bool noisy_bent_split = true;
+    * such plane). Off by default since issue #6's eighteenth session: the industrial scene at
+    * σ = 2 cm got two false planes, the halves of a pipe facet (hinge 16°, each half's quadric share
+    * 0.03-0.06, within the flat test's allowance), and with bent_side_parent_mnd and the trimmed
+    * refit of the caller's normals it gains synpeb_pc01 only 0.0013-0.0018 of F1. */
+  bool noisy_bent_split = false;
+  /** \brief Departure (part of bent_plane_split): a side of a bent plane passes T2 if its MND is
+    * below the MND of the plane it was cut from, where that is wider than T2's 60°. Growth and
+    * re-estimation (Sec. 3.5) test nothing again, so a plane on very noisy normals keeps an MND past
+    * T2, and each side of it, as noisy, failed T2 and kept the plane whole: synpeb_pc01 on PCL's
+    * k = 50 normals had a plane over two faces 39° apart (3,779 and 3,627 samples, MND 70°), the
+    * side of 3,884 samples at MND 60.5°. false = T2 at 60° for every side. */
+  bool bent_side_parent_mnd = true;
   /** \brief Bent planes: the largest ratio of the two planes' robust σ to the one plane's that counts as
     * a bend (0.8; fitHinge's search on flat noisy planes stays above 0.85). */
   double bent_sigma_ratio = 0.8;

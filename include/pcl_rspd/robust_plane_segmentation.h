@@ -388,6 +388,15 @@ public:
   bool
   getReleasedLayerCheck () const { return params_.released_layer_check; }
 
+  /** \brief Bent planes' noisy sides (default true; false = T2 at 60° for every side): a side of a
+    * bent plane passes T2 if its MND is below that of the plane it was cut from, where that is wider
+    * than 60°. See pcl::rspd::DetectorParameters::bent_side_parent_mnd. */
+  void
+  setBentSideParentMnd (bool enable);
+  /** \brief Whether bent planes' sides are held to their plane's MND where it is past T2. */
+  bool
+  getBentSideParentMnd () const { return params_.bent_side_parent_mnd; }
+
   /** \brief Connected parts (default true; false = the paper): a plane whose members that pass its
     * inlier test at its last estimate form two or more parts of at least ε samples with no graph edge
     * between them is split into them. See pcl::rspd::splitDisconnectedPlanes and
@@ -527,9 +536,11 @@ public:
   bool
   getBoundedReestimation () const { return params_.bounded_reestimation; }
 
-  /** \brief Bent noisy planes (default true; false = dropped): a plane a noisy seed seeded that is
-    * not flat once grown, but that two flat planes meeting at an edge explain, is split into them
-    * rather than dropped. See pcl::rspd::DetectorParameters::noisy_bent_split. */
+  /** \brief Bent noisy planes (default false since issue #6's eighteenth session: such a plane is
+    * dropped): a plane a noisy seed seeded that is not flat once grown, but that two flat planes
+    * meeting at an edge explain, is split into them rather than dropped. Off because it also split a
+    * pipe facet into two halves each judged flat at σ = 2 cm (two false planes). See
+    * pcl::rspd::DetectorParameters::noisy_bent_split. */
   void
   setNoisyPlaneBentSplit (bool enable);
   /** \brief Whether bent noisy planes are split rather than dropped. */

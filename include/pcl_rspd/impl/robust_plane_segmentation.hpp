@@ -334,6 +334,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setReleasedLayerCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setBentSideParentMnd (bool enable)
+{
+  params_.bent_side_parent_mnd = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setConnectedParts (bool enable)
 {
   params_.connected_parts = enable;
