@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -86,6 +86,9 @@ const char* const kHelp =
     "  --bent-split on|off  a plane whose points lie on two planes meeting at an edge (more than\n"
     "                   15 degrees apart, well beyond its noise) is split there (default on;\n"
     "                   off = the paper)\n"
+    "  --bent-side-mnd on|off  a side of a bent plane passes T2 if its MND is below that of\n"
+    "                   the plane it was cut from, where that is past T2's 60 degrees (default on;\n"
+    "                   off = T2 at 60 degrees)\n"
     "  --normal-fit pca|trimmed   estimated normals by PCA over the k-neighbourhood (default, the\n"
     "                             paper) or from its reweighted least-trimmed-squares plane (more\n"
     "                             accurate at edges, ~20x the normal stage's time)\n"
@@ -149,6 +152,7 @@ struct Options
   LeftNormals left_normals = LeftNormals::Auto;
   bool connected_parts = true;
   bool bent_split = true;
+  bool bent_side_mnd = true;
   bool curved_check = false;
   bool bend_noise_test = true;
   bool drop_outlier_seeds = true;
@@ -268,6 +272,8 @@ parseArguments (int argc, char** argv)
       o.connected_parts = option.choice ("on", "off");
     else if (arg == "--bent-split")
       o.bent_split = option.choice ("on", "off");
+    else if (arg == "--bent-side-mnd")
+      o.bent_side_mnd = option.choice ("on", "off");
     else if (arg == "--normal-fit")
       o.trimmed_normals = !option.choice ("pca", "trimmed");
     else if (arg == "--frame")
@@ -437,6 +443,7 @@ run (const Options& o)
   seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);
   seg.setConnectedParts (o.connected_parts);
   seg.setBentPlaneSplit (o.bent_split);
+  seg.setBentSideParentMnd (o.bent_side_mnd);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setBendNoiseTest (o.bend_noise_test);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
