@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -50,7 +50,12 @@ const char* const kHelp =
     "  --normal-scale S estimated normals from the k-neighbourhood ('fixed', the paper's), from the\n"
     "                   finest scale that resolves a surface where noise swamps the k-neighbourhood\n"
     "                   ('adaptive'), or that only when it swamps most of them ('auto', the\n"
-    "                   default); ignored when the input has normals\n"
+    "                   default); with the input's normals, 'auto' also estimates them again\n"
+    "                   when they are noise at the k-scale (see --given-normals)\n"
+    "  --given-normals check|keep  the input's normals are estimated again when most\n"
+    "                   k-neighbourhoods resolve no surface and the normals agree with their\n"
+    "                   neighbours' no better than those neighbourhoods' PCA normals ('check', the\n"
+    "                   default, with --normal-scale auto); 'keep' uses them as given\n"
     "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
     "  --left-normals auto|trimmed|pca  the small-plane pass splits the points it left a\n"
@@ -140,6 +145,7 @@ struct Options
   int k = 0; // automatic
   int threads = 0;  // 0: leave OpenMP's default
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
+  bool given_normal_check = true;
   bool coplanar_merge = true;
   bool rim_retest = true;
   bool release = true;
@@ -238,6 +244,8 @@ parseArguments (int argc, char** argv)
       else
         throw UsageError{"--normal-scale needs 'fixed', 'adaptive' or 'auto' (got '" + v + "')"};
     }
+    else if (arg == "--given-normals")
+      o.given_normal_check = option.choice ("check", "keep");
     else if (arg == "--coplanar-merge")
       o.coplanar_merge = option.choice ("on", "off");
     else if (arg == "--rim-retest")
@@ -430,6 +438,7 @@ run (const Options& o)
     seg.setInputNormals (cloud.normals);
   seg.setNumberOfNeighbours (o.k);
   seg.setNormalScale (o.normal_scale);
+  seg.setGivenNormalCheck (o.given_normal_check);
   seg.setCoplanarMerge (o.coplanar_merge);
   seg.setRimCellRetest (o.rim_retest);
   seg.setFarMemberRelease (o.release);
@@ -479,7 +488,8 @@ run (const Options& o)
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,
-       cloud.normals ? " (from the file)" : "", stats.split_seconds, stats.grow_merge_seconds, stats.output_seconds);
+       cloud.normals ? (stats.given_normals_replaced ? " (the file's were noise at this scale: estimated again)" : " (from the file)") : "",
+       stats.split_seconds, stats.grow_merge_seconds, stats.output_seconds);
   const pcl::rspd::NormalScaleStatistics& scales = seg.getNormalScaleStatistics ();
   if (!scales.samples_per_scale.empty ())
   {

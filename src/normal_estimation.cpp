@@ -4,6 +4,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <pcl_rspd/normal_estimation.h>
+#include <pcl_rspd/robust_statistics.h> // medianInPlace
 
 #include <pcl/common/eigen.h>
 
@@ -171,6 +172,69 @@ isotropicEigenRatioQuantile (int k, double quantile)
   std::lock_guard<std::mutex> lock (mutex);
   cache.emplace (key, value);
   return value;
+}
+
+bool
+givenNormalsAreNoise (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
+                      const std::vector<Eigen::Vector3f>& given, GivenNormalCheck* check)
+{
+  GivenNormalCheck local;
+  GivenNormalCheck& c = check ? *check : local;
+  c = GivenNormalCheck ();
+  const std::size_t n = points.size ();
+  const int k = graph.k ();
+  if (n == 0 || given.size () != n || k < 2)
+    return false;
+  const int threads = resolveThreads (num_threads);
+  const double bound = isotropicEigenRatioQuantile (k, 0.05);
+  // A few thousand probes tell the median sample's resolution and the spread of normals well enough,
+  // at a small part of a normal stage's cost (the caller gave normals to spare it).
+  const std::size_t stride = std::max<std::size_t> (1, n / 4096);
+  std::vector<std::uint32_t> probes;
+  for (std::size_t i = 0; i < n; i += stride)
+    probes.push_back (static_cast<std::uint32_t> (i));
+  c.probes = probes.size ();
+  const auto pcaNormal = [&] (std::uint32_t i, double& ratio) {
+    Eigen::Vector3f normal = Eigen::Vector3f::UnitZ ();
+    const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) {
+      graph.forEachNeighbor (i, add);
+    });
+    fitNormal (cov, normal, ratio);
+    return normal;
+  };
+  std::size_t unresolved = 0;
+#pragma omp parallel for schedule(static, 64) num_threads(threads) reduction(+ : unresolved)
+  for (std::ptrdiff_t p = 0; p < static_cast<std::ptrdiff_t> (probes.size ()); ++p)
+  {
+    double ratio;
+    pcaNormal (probes[p], ratio);
+    unresolved += ratio < bound ? 0 : 1;
+  }
+  c.unresolved = unresolved;
+  // Median angle of each probe's normal to its neighbours', then the median over the probes.
+  const auto spread = [&] (const auto& normalOf) {
+    std::vector<double> per (probes.size ());
+#pragma omp parallel for schedule(static, 64) num_threads(threads)
+    for (std::ptrdiff_t p = 0; p < static_cast<std::ptrdiff_t> (probes.size ()); ++p)
+    {
+      const Eigen::Vector3f own = normalOf (probes[p]);
+      std::vector<double> angles;
+      angles.reserve (static_cast<std::size_t> (k));
+      graph.forEachNeighbor (probes[p], [&] (std::uint32_t j) {
+        angles.push_back (std::acos (std::min (1.0, static_cast<double> (std::abs (own.dot (normalOf (j)))))));
+      });
+      per[p] = medianInPlace (angles);
+    }
+    return medianInPlace (per);
+  };
+  c.given_spread = spread ([&] (std::uint32_t i) { return given[i]; });
+  if (2 * unresolved <= probes.size ())
+    return false; // the k-scale resolves the median sample's surface: normals there can be trusted
+  c.neighbourhood_spread = spread ([&] (std::uint32_t i) {
+    double ratio;
+    return pcaNormal (i, ratio);
+  });
+  return c.given_spread >= c.neighbourhood_spread;
 }
 
 void

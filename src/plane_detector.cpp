@@ -560,6 +560,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   st.graph_seconds = before.graph_seconds;
   st.graph_bytes = before.graph_bytes;
   st.normals_seconds = before.normals_seconds;
+  st.given_normals_replaced = before.given_normals_replaced;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now ();
 

@@ -1015,7 +1015,7 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
       {"--release", "1"}, {"--release"}, {"--edge-sides", "yes"}, {"--edge-sides"}, {"--step-sides", "1"}, {"--step-sides"}, {"--thick-join", "yes"}, {"--thick-join"}, {"--small-thick-join", "yes"}, {"--small-thick-join"}, {"--connected-parts", "1"}, {"--connected-parts"},
       {"--bent-split", "yes"}, {"--bent-split"}, {"--released-planes", "no"}, {"--released-planes"},
       {"--support", "yes"}, {"--support"}, {"--bounded-reestimate", "yes"}, {"--bounded-reestimate"}, {"--noisy-bent-split", "1"}, {"--noisy-bent-split"},
-      {"--left-normals", "on"}, {"--left-normals"}, {"--bent-side-mnd", "yes"}, {"--bent-side-mnd"},
+      {"--left-normals", "on"}, {"--left-normals"}, {"--bent-side-mnd", "yes"}, {"--bent-side-mnd"}, {"--given-normals", "on"}, {"--given-normals"},
   };
   for (const auto& args : cases)
   {

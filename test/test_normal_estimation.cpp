@@ -247,3 +247,63 @@ TEST (NormalEstimation, AutomaticScaleWidensOnlyWhenMostSamplesAreUnresolved)
   EXPECT_TRUE (automatic == m.fixed);
   EXPECT_GT (m.stats.widened (), 0u); // Adaptive does widen some of the outliers
 }
+
+namespace
+{
+/** The 50-NN graph of \a p and its PCA normals, as a caller at k = 50 would give them. */
+struct KScale
+{
+  pcl::rspd::NeighborGraph graph;
+  Points normals;
+};
+
+KScale
+kScale (const Points& p)
+{
+  KScale k;
+  EXPECT_TRUE (pcl::rspd::buildKnnGraph (p, 50, 2, k.graph));
+  pcl::rspd::estimateNormals (p, k.graph, 2, k.normals);
+  return k;
+}
+} // namespace
+
+TEST (NormalEstimation, GivenNormalsThatAreNoiseAtTheKScaleAreTold)
+{
+  // Noise as wide as the 50-neighbourhood (above): PCA normals at that k are noise, and normals
+  // given as exactly those are told apart from normals of a wider scale (here exact, spread 0).
+  const Points p = noisySquare (20000, 0.04f, 2);
+  const KScale k = kScale (p);
+  const pcl::rspd::NeighborGraph& graph = k.graph;
+  const Points& k_scale = k.normals;
+  pcl::rspd::GivenNormalCheck check;
+  EXPECT_TRUE (pcl::rspd::givenNormalsAreNoise (p, graph, 2, k_scale, &check));
+  EXPECT_GT (2 * check.unresolved, check.probes);
+  EXPECT_GE (check.given_spread, check.neighbourhood_spread);
+  std::printf ("    k-scale normals: %zu of %zu probes unresolved, spread %.1f deg against %.1f deg\n",
+               check.unresolved, check.probes, check.given_spread / kDegree, check.neighbourhood_spread / kDegree);
+  const Points exact (p.size (), Eigen::Vector3f::UnitZ ());
+  EXPECT_FALSE (pcl::rspd::givenNormalsAreNoise (p, graph, 2, exact, &check));
+  EXPECT_EQ (check.given_spread, 0.0);
+  // One thread or two: the same answer and figures.
+  pcl::rspd::GivenNormalCheck one;
+  EXPECT_TRUE (pcl::rspd::givenNormalsAreNoise (p, graph, 1, k_scale, &one));
+  pcl::rspd::givenNormalsAreNoise (p, graph, 2, k_scale, &check);
+  EXPECT_EQ (one.given_spread, check.given_spread);
+  EXPECT_EQ (one.neighbourhood_spread, check.neighbourhood_spread);
+}
+
+TEST (NormalEstimation, GivenNormalsOfAResolvedSurfaceAreKept)
+{
+  // Noise 1/30 of the neighbourhood's radius: the k-scale resolves the surface, and the caller's
+  // normals are trusted whatever they are. Bad input: no check.
+  const Points p = noisySquare (20000, 0.001f, 1);
+  const KScale k = kScale (p);
+  const pcl::rspd::NeighborGraph& graph = k.graph;
+  const Points& k_scale = k.normals;
+  pcl::rspd::GivenNormalCheck check;
+  EXPECT_FALSE (pcl::rspd::givenNormalsAreNoise (p, graph, 2, k_scale, &check));
+  EXPECT_LT (2 * check.unresolved, check.probes);
+  EXPECT_EQ (check.neighbourhood_spread, 0.0); // not measured
+  EXPECT_FALSE (pcl::rspd::givenNormalsAreNoise (p, graph, 2, Points (3), &check));
+  EXPECT_FALSE (pcl::rspd::givenNormalsAreNoise (Points (), graph, 2, Points (), &check));
+}

@@ -617,6 +617,29 @@ TEST (Scenario, SparseBoxesOnPclNormalsNeedReestimationWithinT2AndTheNoisyBentSp
   EXPECT_EQ (paper.stats.kept_estimates, 0u);
 }
 
+TEST (Scenario, NoisyCubeOnPclNormalsGetsNormalsEstimatedAgain)
+{
+  // σ = 3 % of the edge at 100,000 points: PCL's k = 50 normals come from a ball about as wide as the
+  // noise, every face's normals spread past T2, and nothing is seeded (0 of 6, measured). They
+  // spread as much as the k-neighbourhoods' PCA normals of a scale that resolves no surface: they
+  // are estimated again at an adaptive scale, as without them.
+  pcl::rspd::SceneOptions o;
+  o.noise = 0.03;
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene ("cube", o);
+  const auto normals = pclNormals (scene.cloud);
+  const Detection checked = detectOnPclNormals (scene, normals);
+  const Detection kept = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    EXPECT_TRUE (s.getGivenNormalCheck ());
+    s.setGivenNormalCheck (false);
+    EXPECT_FALSE (s.getGivenNormalCheck ());
+  });
+  EXPECT_TRUE (checked.stats.given_normals_replaced);
+  EXPECT_EQ (checked.score.found, 6);
+  EXPECT_GE (checked.score.f1, 0.94);
+  EXPECT_FALSE (kept.stats.given_normals_replaced);
+  EXPECT_LE (kept.score.found, 1);
+}
+
 TEST (Scenario, FacadeOnPclNormalsGetsNoSlabOfOutliersFromTrimmedNormals)
 {
   // 10,000 samples, 15 % outliers, PCL's k = 50 normals: trimmed normals of scattered outliers

@@ -129,6 +129,33 @@ estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const 
 double
 isotropicEigenRatioQuantile (int k, double quantile);
 
+/** \brief What givenNormalsAreNoise measured, for logs and tests. */
+struct GivenNormalCheck
+{
+  std::size_t probes = 0;          ///< samples tested (every n/4096-th, at least every sample up to 4096)
+  std::size_t unresolved = 0;      ///< of those, samples whose k-neighbourhood resolves no surface
+  double given_spread = 0.0;       ///< median over probes of the median angle (radians) to the neighbours' given normals
+  double neighbourhood_spread = 0.0; ///< the same for the k-neighbourhoods' PCA normals (0 when not measured)
+};
+
+/** \brief Whether normals given with a cloud are noise at the graph's scale: most probed samples'
+  * k-neighbourhoods resolve no surface (the resolution test of estimateAdaptiveScaleNormals), and
+  * the given normals agree with their neighbours' no better than those k-neighbourhoods' PCA
+  * normals do (median over the probes of the median angle to the graph neighbours' normals).
+  *
+  * PCA normals over k = 50 neighbours of a 1M-point cube with noise 1 % of its edge come from a
+  * ball about as wide as the noise: every face's normals spread past T2, and no cell seeds a plane.
+  * Normals the caller estimated at a wider scale agree with each other better than the
+  * k-neighbourhoods' and are kept. Relative, so free of any length. Deterministic.
+  * \param[in] points samples
+  * \param[in] graph their k-NN graph
+  * \param[in] num_threads OpenMP threads (0: OpenMP's default)
+  * \param[in] given the caller's normals, one per sample (unit length)
+  * \param[out] check if not null: what was measured */
+bool
+givenNormalsAreNoise (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
+                      const std::vector<Eigen::Vector3f>& given, GivenNormalCheck* check = nullptr);
+
 /** \brief OpenMP thread count for a request (0: OpenMP's default, i.e. OMP_NUM_THREADS). */
 int
 resolveThreads (int requested);

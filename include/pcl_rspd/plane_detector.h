@@ -330,7 +330,8 @@ struct DetectorStatistics
   double prepare_seconds = 0.0;      ///< valid samples, centring, spatial order (wall time)
   double graph_seconds = 0.0;        ///< building the k-NN graph (wall time)
   std::size_t graph_bytes = 0;       ///< memory held by the compressed k-NN graph
-  double normals_seconds = 0.0;      ///< estimating normals (0 when given)
+  double normals_seconds = 0.0;      ///< estimating normals (0 when given and kept)
+  bool given_normals_replaced = false; ///< the caller's normals were noise at the graph's scale and were estimated again (RobustPlaneSegmentation::setGivenNormalCheck)
   double split_seconds = 0.0;        ///< split phase
   double grow_merge_seconds = 0.0;   ///< grow-merge iterations
   double output_seconds = 0.0;       ///< plane outputs: indices, labels, centroids, hulls, rectangles

@@ -306,6 +306,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setLeftNormalRefitOnGivenNormals (bool
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setGivenNormalCheck (bool enable)
+{
+  given_normal_check_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setRimCellRetest (bool enable)
 {
   params_.rim_cell_retest = enable;
@@ -765,6 +772,21 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   const auto t1 = std::chrono::steady_clock::now ();
   stats_.graph_seconds = std::chrono::duration<double> (t1 - t0).count ();
   stats_.graph_bytes = graph_.memoryBytes ();
+  given_normal_check_stats_ = pcl::rspd::GivenNormalCheck ();
+  if (normals_ && given_normal_check_ && normal_scale_ == pcl::rspd::NormalScale::Automatic &&
+      pcl::rspd::givenNormalsAreNoise (points_.points, graph_, params_.num_threads, points_.normals,
+                                       &given_normal_check_stats_))
+  {
+    // The caller's normals are noise at this scale (setGivenNormalCheck): estimated here instead, at
+    // the finest scale that resolves a surface, as without them.
+    pcl::rspd::estimateAdaptiveScaleNormals (points_.points, graph_, params_.num_threads, points_.normals,
+                                             &normal_scale_stats_, true);
+    stats_.given_normals_replaced = true;
+    stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
+    PCL_DEBUG ("[pcl::%s::segment] the given normals spread as much as the %d-neighbourhoods' (%zu of %zu "
+               "probes unresolved): estimated again at an adaptive scale\n", name, k_used_,
+               given_normal_check_stats_.unresolved, given_normal_check_stats_.probes);
+  }
   if (!normals_ && normal_scale_ != pcl::rspd::NormalScale::Fixed)
   {
     pcl::rspd::estimateAdaptiveScaleNormals (points_.points, graph_, params_.num_threads, points_.normals,
