@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -78,6 +78,9 @@ const char* const kHelp =
     "                   off = the paper)\n"
     "  --small-thick-join on|off  the small-plane pass joins its thick cells the same way\n"
     "                   (default on; needs --thick-join on)\n"
+    "  --noisy-groups on|off  small-plane seeds too noisy alone are joined where they touch\n"
+    "                   and agree; a group of eps samples that passes the tests, is flat and is\n"
+    "                   at most twice as noisy as the planes found seeds a plane (default on)\n"
     "  --step-sides on|off  where two parallel planes make a step deeper than their noise bands,\n"
     "                   a point within the other plane's band goes to it when it holds more of\n"
     "                   the point's neighbours (default on; off = the paper)\n"
@@ -154,6 +157,7 @@ struct Options
   bool step_sides = true;
   bool thick_join = true;
   bool small_thick_join = true;
+  bool noisy_groups = true;
   bool support = true;
   LeftNormals left_normals = LeftNormals::Auto;
   bool connected_parts = true;
@@ -260,6 +264,8 @@ parseArguments (int argc, char** argv)
       o.thick_join = option.choice ("on", "off");
     else if (arg == "--small-thick-join")
       o.small_thick_join = option.choice ("on", "off");
+    else if (arg == "--noisy-groups")
+      o.noisy_groups = option.choice ("on", "off");
     else if (arg == "--step-sides")
       o.step_sides = option.choice ("on", "off");
     else if (arg == "--left-normals")
@@ -447,6 +453,7 @@ run (const Options& o)
   seg.setStepSides (o.step_sides);
   seg.setThickCellJoin (o.thick_join);
   seg.setSmallPassThickCellJoin (o.small_thick_join);
+  seg.setNoisySeedGroups (o.noisy_groups);
   seg.setSupportCheck (o.support);
   seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
   seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);
@@ -480,10 +487,10 @@ run (const Options& o)
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
-       "pass (%zu by groups of its thick cells, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
+       "pass (%zu by groups of its thick cells, %zu by groups of its noisy seeds, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
-       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
+       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <pcl_rspd/bent_planes.h>
+#include <pcl_rspd/disjoint_sets.h>
 #include <pcl_rspd/normal_estimation.h>
 #include <pcl_rspd/octree_split.h>
 
@@ -214,13 +215,6 @@ std::vector<PlanarPatch>
 joinThickCells (const PointSet& points, const DetectorParameters& params, const std::vector<ThickCell>& thick)
 {
   const std::size_t count = thick.size ();
-  std::vector<std::uint32_t> parent (count);
-  std::iota (parent.begin (), parent.end (), 0u);
-  const auto find = [&parent] (std::uint32_t x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
   const auto touch = [&] (const ThickCell& a, const ThickCell& b) {
     const double tol = 1e-9 * std::max (a.size, b.size);
     for (int d = 0; d < 3; ++d)
@@ -228,30 +222,18 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
         return false;
     return true;
   };
-  // T3 across the pair: the share of a's samples within b's MDP, and the reverse. A cell across an
-  // edge has planar-looking noisy normals, but half its samples lie off either face.
-  const auto within = [&] (const ThickCell& a, const ThickCell& b) {
-    std::size_t in = 0;
-    for (const auto i : a.samples)
-      in += std::abs ((points.points[i].cast<double> () - b.estimate.center).dot (b.estimate.normal)) <= b.estimate.mdp ();
-    return static_cast<double> (in) >= (1.0 - params.max_outlier_ratio) * static_cast<double> (a.samples.size ());
-  };
   const auto agree = [&] (const ThickCell& a, const ThickCell& b) {
-    return std::abs (a.estimate.normal.dot (b.estimate.normal)) >= std::cos (std::max (a.estimate.mnd (), b.estimate.mnd ())) &&
-           within (a, b) && within (b, a);
+    return setsShareAPlane (points, params, a.samples, a.estimate.center, a.estimate.normal, a.estimate.mdp (),
+                            a.estimate.mnd (), b.samples, b.estimate.center, b.estimate.normal, b.estimate.mdp (),
+                            b.estimate.mnd ());
   };
+  DisjointSets sets (count);
   for (std::uint32_t a = 0; a < count; ++a)
     for (std::uint32_t b = a + 1; b < count; ++b)
       if (touch (thick[a], thick[b]) && agree (thick[a], thick[b]))
-      {
-        const std::uint32_t ra = find (a), rb = find (b);
-        if (ra != rb)
-          parent[std::max (ra, rb)] = std::min (ra, rb);
-      }
+        sets.join (a, b);
   std::vector<PlanarPatch> patches;
-  std::vector<std::vector<std::uint32_t>> groups (count);
-  for (std::uint32_t a = 0; a < count; ++a)
-    groups[find (a)].push_back (a);
+  const std::vector<std::vector<std::uint32_t>> groups = sets.groups ();
   for (const auto& group : groups)
   {
     if (group.size () < 2)

@@ -189,5 +189,22 @@ robustPlanarityTest (const PointSet& points, const std::vector<std::uint32_t>& s
   return result;
 }
 
+bool
+setsShareAPlane (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>& a,
+                 const Eigen::Vector3d& a_center, const Eigen::Vector3d& a_normal, double a_mdp, double a_mnd,
+                 const std::vector<std::uint32_t>& b, const Eigen::Vector3d& b_center, const Eigen::Vector3d& b_normal,
+                 double b_mdp, double b_mnd)
+{
+  const auto within = [&] (const std::vector<std::uint32_t>& samples, const Eigen::Vector3d& center,
+                           const Eigen::Vector3d& normal, double mdp) {
+    std::size_t in = 0;
+    for (const auto i : samples)
+      in += std::abs ((points.points[i].cast<double> () - center).dot (normal)) <= mdp;
+    return static_cast<double> (in) >= (1.0 - params.max_outlier_ratio) * static_cast<double> (samples.size ());
+  };
+  return std::abs (a_normal.dot (b_normal)) >= std::cos (std::max (a_mnd, b_mnd)) && within (a, b_center, b_normal, b_mdp) &&
+         within (b, a_center, a_normal, a_mdp);
+}
+
 } // namespace rspd
 } // namespace pcl

@@ -16,6 +16,7 @@
 #include <pcl_rspd/plane_support.h>
 #include <pcl_rspd/robust_normals.h>
 #include <pcl_rspd/robust_statistics.h>
+#include <pcl_rspd/seed_groups.h>
 
 #include <pcl/console/print.h>
 
@@ -645,6 +646,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                                    params.small_cell_thick_join && round == 0 ? &joined_left : nullptr,
                                                    std::max (max_mnd, max_retested_mnd));
       st.rim_seeds += rim_seeds;
+      std::vector<PlanarPatch> too_noisy; // turned down alone; joined below (noisy_seed_groups)
       for (auto& seed : seeds)
       {
         // Trimmed normals of scattered samples agree by chance: each is the plane of half a
@@ -654,7 +656,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         if (round == 1 && seed.mdp > max_mdp)
           continue;
         if (seed.mnd > max_mnd && (seed.mnd > max_retested_mnd || !isFlatPatch (round_points, params, seed, false)))
-          continue; // noisier than every plane found: an edge band of bent normals, not a plane
+        {
+          // Noisier than every plane found: an edge band of bent normals, not a plane, or a piece of
+          // a plane rougher than any found, which only a group of such seeds can tell.
+          if (params.noisy_seed_groups && round == 0)
+            too_noisy.push_back (std::move (seed));
+          continue;
+        }
         bool beside = false;
         if (isBandLayer (round_points, graph, params, patches, band, labels, seed, &beside))
           continue; // a layer of a found plane's noise band: its rim beside a step, or a duplicate
@@ -672,6 +680,18 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         ++st.small_seeds;
         st.small_seeds_trimmed += round;
       }
+      for (auto& seed : joinNoisySeeds (round_points, graph, params, too_noisy, std::max (max_mnd, max_retested_mnd), max_mdp))
+      {
+        if (isBandLayer (round_points, graph, params, patches, band, labels, seed, nullptr))
+          continue;
+        for (const auto i : seed.members)
+          labels[i] = static_cast<std::uint32_t> (patches.size ());
+        seed.retested = true; // noisier than every plane found: judged again once grown
+        patches.push_back (std::move (seed));
+        band.push_back (patches.back ().mdp);
+        ++st.small_seeds;
+        ++st.small_noisy_groups;
+      }
     }
   }
   if (st.small_seeds > 0 || st.retested_seeds > 0)
@@ -681,11 +701,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                    [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
                    patches.end ());
   }
-  if (st.retested_seeds > 0 || st.joined_seeds > 0)
+  if (st.retested_seeds > 0 || st.joined_seeds > 0 || st.small_noisy_groups > 0)
   {
-    // A plane an outlier seed or a group of thick cells seeded: grown, it has the samples its seed
-    // may have lacked to show a bend, and it must still be flat (at 10,000 points a pipe is sampled
-    // a few times around, and its facets' seeds are too small to tell).
+    // A plane an outlier seed, a group of thick cells or a group of noisy small seeds seeded: grown,
+    // it has the samples its seed may have lacked to show a bend, and it must still be flat (at
+    // 10,000 points a pipe is sampled a few times around, and its facets' seeds are too small to tell).
     judgeNoisyPlanes (points, params, 0, patches, st);
     labels = labelSamples (points.size (), patches);
   }

@@ -112,5 +112,15 @@ PlanarityResult
 robustPlanarityTest (const PointSet& points, const std::vector<std::uint32_t>& samples,
                      const DetectorParameters& params);
 
+/** \brief Whether two touching sets of samples lie on one plane, as the thick-cell join and the
+  * groups of noisy seeds ask: their planes' normals within the larger of the two MNDs, and at least
+  * 1 - T3's share of each set within the other's MDP (T3 across the pair: a cell across an edge has
+  * planar-looking noisy normals, but half its samples lie off either face). */
+bool
+setsShareAPlane (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>& a,
+                 const Eigen::Vector3d& a_center, const Eigen::Vector3d& a_normal, double a_mdp, double a_mnd,
+                 const std::vector<std::uint32_t>& b, const Eigen::Vector3d& b_center, const Eigen::Vector3d& b_normal,
+                 double b_mdp, double b_mnd);
+
 } // namespace rspd
 } // namespace pcl

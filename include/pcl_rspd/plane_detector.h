@@ -106,6 +106,19 @@ struct DetectorParameters
     * k = 50 normals a stair riser's thick cells gave way to parents across its edge with a tread,
     * whose groups are bent. false = the small cells alone. */
   bool small_cell_thick_join = true;
+  /** \brief Departure (groups of noisy small seeds, part of the small-cell pass, on the PCA normals):
+    * the pass's seeds turned down as noisier than every plane found are joined where they touch and
+    * their planes agree, and a group seeds a plane if it holds ε samples, passes T1-T3, is flat, is
+    * no edge band (bentAtAnEdge) or noise-band layer, and is at most noisy_group_ratio times as noisy
+    * and as thick as the planes found (joinNoisySeeds). A rough face whose every octree cell holds
+    * a piece of the next face is seeded no other way (the boxes with 15 % outliers: the roughest box,
+    * σ = 3 cm, 0 of 5 faces). Each plane so seeded is judged flat again once grown. false = the
+    * noisy seeds are turned down. */
+  bool noisy_seed_groups = true;
+  /** \brief See noisy_seed_groups: a group's MND and MDP may be at most this many times those of the
+    * noisiest and thickest plane found (2). Measured: real rough faces within 1.8 and 1.4 times;
+    * a slab of outliers 5 times as thick, tank facets 5 to 15 times as noisy. */
+  double noisy_group_ratio = 2.0;
   /** \brief Departure (trimmed normals for what growth left, part of the small-cell pass): after
     * the pass's split on the PCA normals, the samples still left get the normal of their
     * k-neighbourhood's reweighted least-trimmed-squares plane (refineNormalsTrimmed) in a copy, and
@@ -310,6 +323,7 @@ struct DetectorStatistics
   std::size_t small_seeds = 0;       ///< seeds of the small-cell pass kept (both rounds)
   std::size_t small_seeds_trimmed = 0; ///< of those, seeded on trimmed normals (left_normal_refit)
   std::size_t small_joined_seeds = 0; ///< of those, seeded by groups of the pass's thick cells (small_cell_thick_join)
+  std::size_t small_noisy_groups = 0; ///< of those, seeded by groups of seeds too noisy alone (noisy_seed_groups)
   std::size_t small_seeds_beside = 0; ///< of those, no band layer only as faces beside a plane (isBandLayer)
   std::size_t left_refitted = 0;     ///< left samples given a trimmed-plane normal (left_normal_refit)
   std::size_t released = 0;          ///< members released as far from their plane (release_far_members)

@@ -571,6 +571,25 @@ public:
   bool
   getSmallPassThickCellJoin () const { return params_.small_cell_thick_join; }
 
+  /** \brief Groups of noisy small seeds (default true; false = such seeds are turned down): the
+    * small-plane pass's seeds noisier than every plane found, turned down alone, are joined where
+    * they touch and agree, and a group of ε samples seeds a plane if it passes T1-T3, is flat, is no
+    * edge band or noise-band layer, and is at most twice as noisy and thick as the planes found. See
+    * pcl::rspd::DetectorParameters::noisy_seed_groups and pcl::rspd::joinNoisySeeds. */
+  void
+  setNoisySeedGroups (bool enable);
+  /** \brief Whether groups of noisy small seeds may seed planes. */
+  bool
+  getNoisySeedGroups () const { return params_.noisy_seed_groups; }
+  /** \brief How many times as noisy (MND) and thick (MDP) as the noisiest and thickest plane found
+    * a group of noisy small seeds may be, at least 1 (default 2). See
+    * pcl::rspd::DetectorParameters::noisy_group_ratio. */
+  void
+  setNoisySeedGroupRatio (double ratio);
+  /** \brief The noisy groups' bound, as a multiple of the planes found. */
+  double
+  getNoisySeedGroupRatio () const { return params_.noisy_group_ratio; }
+
   /** \brief Bend tested against noise (default true; false = a fixed share, as before): where a
     * noisy seed or plane is judged flat (the outlier-seed retest, the thick-cell groups, the
     * small-plane pass), a quadric's share of its residual counts as a bend only beyond what the

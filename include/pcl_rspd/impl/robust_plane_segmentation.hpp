@@ -460,6 +460,26 @@ RobustPlaneSegmentation<PointT, NormalT>::setSmallPassThickCellJoin (bool enable
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNoisySeedGroups (bool enable)
+{
+  params_.noisy_seed_groups = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNoisySeedGroupRatio (double ratio)
+{
+  if (!(ratio >= 1.0 && std::isfinite (ratio)))
+  {
+    PCL_ERROR ("[pcl::%s::setNoisySeedGroupRatio] the ratio must be finite and at least 1 (got %g)\n",
+               getClassName ().c_str (), ratio);
+    return;
+  }
+  params_.noisy_group_ratio = ratio;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setBendNoiseTest (bool enable)
 {
   params_.bend_confidence = enable ? pcl::rspd::DetectorParameters ().bend_confidence : 0.0;

@@ -1,0 +1,78 @@
+/*
+ * pcl_rspd: seed groups (see seed_groups.h).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/bent_planes.h>     // bentAtAnEdge
+#include <pcl_rspd/disjoint_sets.h>
+#include <pcl_rspd/patch_growth.h>    // kNoPatch
+#include <pcl_rspd/plane_curvature.h> // isFlatPatch
+#include <pcl_rspd/seed_groups.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pcl
+{
+namespace rspd
+{
+std::vector<PlanarPatch>
+joinNoisySeeds (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                const std::vector<PlanarPatch>& seeds, double max_mnd, double max_mdp)
+{
+  std::vector<PlanarPatch> out;
+  const std::size_t count = seeds.size ();
+  if (count < 2)
+    return out;
+  std::vector<std::uint32_t> owner (points.size (), kNoPatch);
+  for (std::uint32_t a = 0; a < count; ++a)
+    for (const auto i : seeds[a].members)
+      owner[i] = a;
+  DisjointSets sets (count);
+  std::vector<std::uint32_t> touching;
+  for (std::uint32_t a = 0; a < count; ++a)
+  {
+    touching.clear ();
+    for (const auto i : seeds[a].members)
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        if (owner[j] != kNoPatch && owner[j] > a)
+          touching.push_back (owner[j]);
+      });
+    std::sort (touching.begin (), touching.end ());
+    touching.erase (std::unique (touching.begin (), touching.end ()), touching.end ());
+    const PlanarPatch& pa = seeds[a];
+    for (const auto b : touching)
+    {
+      const PlanarPatch& pb = seeds[b];
+      if (setsShareAPlane (points, params, pa.members, pa.center, pa.normal, pa.mdp, pa.mnd, pb.members, pb.center,
+                           pb.normal, pb.mdp, pb.mnd))
+        sets.join (a, b);
+    }
+  }
+  const std::vector<std::vector<std::uint32_t>> groups = sets.groups ();
+  const double ratio = params.noisy_group_ratio;
+  for (const auto& group : groups)
+  {
+    if (group.size () < 2)
+      continue;
+    std::vector<std::uint32_t> samples;
+    for (const auto s : group)
+      samples.insert (samples.end (), seeds[s].members.begin (), seeds[s].members.end ());
+    if (samples.size () < params.min_patch_size)
+      continue;
+    std::sort (samples.begin (), samples.end ());
+    PlanarityResult r = robustPlanarityTest (points, samples, params);
+    if (r.verdict != PlanarityVerdict::Planar || !(r.estimate.mnd () <= ratio * max_mnd) ||
+        !(r.estimate.mdp () <= ratio * max_mdp) || bentAtAnEdge (points, r.inliers, params))
+      continue;
+    PlanarPatch seed;
+    seed.members = std::move (r.inliers);
+    seed.first_index = seed.members.front ();
+    seed.setEstimate (r.estimate);
+    if (isFlatPatch (points, params, seed, false))
+      out.push_back (std::move (seed));
+  }
+  return out;
+}
+
+} // namespace rspd
+} // namespace pcl
