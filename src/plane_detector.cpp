@@ -295,8 +295,11 @@ judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std:
   else
   {
     flat.resize (patches.size ());
+    DetectorParameters judge = params; // see DetectorParameters::judge_bend_confidence
+    if (params.bend_confidence > 0.0)
+      judge.bend_confidence = params.judge_bend_confidence;
     for (std::size_t p = 0; p < patches.size (); ++p)
-      flat[p] = !patches[p].retested || isFlatPatch (points, params, patches[p], true);
+      flat[p] = !patches[p].retested || isFlatPatch (points, judge, patches[p], true);
   }
   std::size_t kept = 0;
   for (std::size_t p = 0; p < patches.size (); ++p)

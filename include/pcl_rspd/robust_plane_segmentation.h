@@ -601,6 +601,15 @@ public:
   /** \brief Whether bends are tested against noise. */
   bool
   getBendNoiseTest () const { return params_.bend_confidence > 0.0; }
+  /** \brief The noise test's confidence where a noisy seed's plane, once grown, is judged and dropped
+    * whole if bent, in (0, 1) (default 0.975; 0.95, the seeds' own, was the value before issue #6's
+    * nineteenth session). Used only with the bend noise test on. See
+    * pcl::rspd::DetectorParameters::judge_bend_confidence. */
+  void
+  setGrownPlaneBendConfidence (double confidence);
+  /** \brief The grown noisy planes' bend confidence. */
+  double
+  getGrownPlaneBendConfidence () const { return params_.judge_bend_confidence; }
 
   /** \brief Last assignment pass once grow-merge is stable (default Tails; None = the paper): samples
     * growth left out join a neighbouring plane: at edges by distance alone (Edges), and inside a

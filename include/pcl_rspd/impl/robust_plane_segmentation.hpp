@@ -487,6 +487,19 @@ RobustPlaneSegmentation<PointT, NormalT>::setBendNoiseTest (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setGrownPlaneBendConfidence (double confidence)
+{
+  if (!(confidence > 0.0 && confidence < 1.0))
+  {
+    PCL_ERROR ("[pcl::%s::setGrownPlaneBendConfidence] the confidence must be in (0, 1) (got %g)\n",
+               getClassName ().c_str (), confidence);
+    return;
+  }
+  params_.judge_bend_confidence = confidence;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setFinalAssignment (pcl::rspd::FinalAssignment mode)
 {
   params_.final_assignment = mode;
