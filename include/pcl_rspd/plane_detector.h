@@ -116,8 +116,9 @@ struct DetectorParameters
     * noisy seeds are turned down. */
   bool noisy_seed_groups = true;
   /** \brief See noisy_seed_groups: a group's MND and MDP may be at most this many times those of the
-    * noisiest and thickest plane found (2). Measured: real rough faces within 1.8 and 1.4 times;
-    * a slab of outliers 5 times as thick, tank facets 5 to 15 times as noisy. */
+    * noisiest and thickest plane found (2). Measured (debug prints): the rough faces let in within 1.8
+    * and 1.4 times, one more at 2.04 times kept out; a slab of outliers 5 times as thick, tank facets
+    * 5 to 15 times as noisy. */
   double noisy_group_ratio = 2.0;
   /** \brief Departure (trimmed normals for what growth left, part of the small-cell pass): after
     * the pass's split on the PCA normals, the samples still left get the normal of their
