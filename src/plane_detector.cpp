@@ -174,7 +174,8 @@ applyChoices (std::vector<std::uint32_t>& open, std::vector<std::uint32_t>& choi
   * condition is left out on purpose: PCA normals bend within a neighbourhood radius of an edge,
   * which is exactly where growth stops short. Edges: only samples next to two or more planes (an
   * edge band), so clutter and outliers beside a single plane stay out. Tails: also a sample most of
-  * whose neighbours hold one plane, if its normal passes that plane's MND and |d| <= 4 σ, σ =
+  * whose neighbours hold one plane, if |d| <= MDP, or if its normal passes that plane's MND and
+  * |d| <= 4 σ, σ =
   * 1.4826 median |d| of the plane's members, and a sample next to two or more planes within a
   * plane's noise band max(MDP, 3 σ) instead of MDP: MDP (median + α MAD of |d|, Eq. 6) is about
   * 2.45 σ on Gaussian noise, so growth leaves the plane's own tail out, which a voxel-based count
@@ -256,7 +257,11 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
         double r = d / (tails ? edge_limit[l] : patch.mdp);
         if (beside_one)
         {
-          if (std::abs (points.normals[i].cast<double> ().dot (patch.normal)) < patch.cos_mnd)
+          // Inside the plane's band (MDP) the sample is as close as its members and most of its
+          // neighbours are members: its normal, which growth rejected, is noise (the cube at σ 1 %
+          // of its edge left 1 % of its faces' middles out, most within 0.5 σ of the plane). Beyond
+          // the band, in the tail, the normal must agree too, which keeps clutter out.
+          if (d > patch.mdp && std::abs (points.normals[i].cast<double> ().dot (patch.normal)) < patch.cos_mnd)
             return;
           r = d / tail_limit[l];
         }

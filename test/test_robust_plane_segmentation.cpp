@@ -447,6 +447,58 @@ TEST (RobustPlaneSegmentation, TailsAssignmentTakesThePlanesNoiseTailOnly)
   EXPECT_EQ (clutter_far[1], clutter_far[0]);
 }
 
+TEST (RobustPlaneSegmentation, TailsAssignmentTakesSamplesInsideThePlaneWhateverTheirNormal)
+{
+  // A noisy plane whose given normals are exact but for every 20th sample's, which lies in the plane.
+  // Growth rejects those by their normal; inside the plane's band (MDP) Tails takes them back, since
+  // most of their neighbours are members; beyond it the normal must still agree, so those stay out.
+  auto cloud = std::make_shared<Cloud> ();
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  std::mt19937 rng (5);
+  std::uniform_real_distribution<float> u (0.0f, 1.0f);
+  std::normal_distribution<float> noise (0.0f, 0.005f);
+  const int n = 20000;
+  for (int i = 0; i < n; ++i)
+  {
+    cloud->push_back (pcl::PointXYZ (u (rng), u (rng), noise (rng)));
+    normals->push_back (i % 20 == 0 ? pcl::Normal (1.0f, 0.0f, 0.0f) : pcl::Normal (0.0f, 0.0f, 1.0f));
+  }
+  std::size_t bent_taken[2] = {0, 0}, bent_far_taken = 0, bent = 0, bent_far = 0;
+  int run = 0;
+  for (const auto mode : {pcl::rspd::FinalAssignment::Edges, pcl::rspd::FinalAssignment::Tails})
+  {
+    pcl::RobustPlaneSegmentation<pcl::PointXYZ, pcl::Normal> seg;
+    seg.setInputCloud (cloud);
+    seg.setInputNormals (normals);
+    seg.setFinalAssignment (mode);
+    std::vector<pcl::ModelCoefficients> c;
+    std::vector<pcl::PointIndices> ind;
+    seg.segment (c, ind);
+    ASSERT_EQ (ind.size (), 1u);
+    const double mdp = seg.getPlanes ()[0].mdp;
+    std::vector<char> in (n, 0);
+    for (const auto i : ind[0].indices)
+      in[i] = 1;
+    for (int i = 0; i < n; i += 20)
+    {
+      const bool far = std::abs ((*cloud)[i].z) > 1.1 * mdp;
+      if (run == 0)
+      {
+        ++bent;
+        bent_far += far;
+      }
+      bent_taken[run] += in[i];
+      if (run == 1 && far)
+        bent_far_taken += in[i];
+    }
+    ++run;
+  }
+  EXPECT_LT (bent_taken[0], bent / 20);        // growth and Edges leave them out
+  EXPECT_GT (bent_taken[1], bent * 95 / 100);  // Tails takes those inside the band back
+  EXPECT_GT (bent_far, 5u);
+  EXPECT_EQ (bent_far_taken, 0u);              // and none in the tail
+}
+
 TEST (RobustPlaneSegmentation, NoiseFreeCornerWithTrimmedNormalsKeepsEveryFace)
 {
   // Exact normals put most seeds' MND at the normal-deviation floor (MAD = 0); one face whose

@@ -613,7 +613,7 @@ public:
 
   /** \brief Last assignment pass once grow-merge is stable (default Tails; None = the paper): samples
     * growth left out join a neighbouring plane: at edges by distance alone (Edges), and inside a
-    * plane also its noise tail (Tails). See
+    * plane also those within its band, whatever their normal, and its noise tail (Tails). See
     * pcl::rspd::DetectorParameters::final_assignment. */
   void
   setFinalAssignment (pcl::rspd::FinalAssignment mode);
