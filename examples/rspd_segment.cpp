@@ -112,7 +112,8 @@ const char* const kHelp =
     "                   planes meeting at an edge explain, is split into them (default off:\n"
     "                   it is dropped)\n"
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
-    "                   a quarter of their residual and bends by half their MND (default off, the paper)\n"
+    "                   a quarter of their residual and bends by half their MND, and their normals\n"
+    "                   turn smoothly, not in steps as over a fold (default on; off = the paper)\n"
     "  --bend-test noise|share  a noisy seed or plane is flat unless a quadric explains more of\n"
     "                   its residual than it explains of a flat plane's noise with as many points,\n"
     "                   and a grown one is thinner than half its narrow side ('noise', the default)\n"
@@ -164,7 +165,7 @@ struct Options
   bool connected_parts = true;
   bool bent_split = true;
   bool bent_side_mnd = true;
-  bool curved_check = false;
+  bool curved_check = true;
   bool bend_noise_test = true;
   bool drop_outlier_seeds = true;
   bool retest_outlier_seeds = true;

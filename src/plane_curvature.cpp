@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace pcl
 {
@@ -81,6 +82,8 @@ measureCurvature (const PointSet& points, const std::vector<std::uint32_t>& memb
     minor_hi = std::max (minor_hi, s);
   }
   c.minor_extent = minor_hi - minor_lo;
+  c.normal = n;
+  c.along = along;
   // Slope of the quadric at the rim, half the extent away along its most curved direction.
   c.half_bend = std::isfinite (kappa) ? std::atan (0.5 * kappa * (hi - lo)) : 0.0;
   return c;
@@ -114,6 +117,56 @@ isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& pa
 {
   return c.share >= params.min_curvature_share && c.share >= chanceBendShare (c.samples, params.bend_confidence) &&
          c.share <= 0.999 && c.half_bend >= 0.5 * mnd;
+}
+
+double
+normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c)
+{
+  const std::size_t n = members.size ();
+  if (n < 12 || c.samples == 0 || !(c.along.squaredNorm () > 0.0))
+    return HUGE_VAL;
+  // (position along the curved direction, signed angle of the normal towards it), both about the
+  // first member: only differences matter, and the offsets stay small wherever the cloud lies.
+  const Eigen::Vector3d origin = points.points[members.front ()].cast<double> ();
+  std::vector<std::pair<double, double>> turn;
+  turn.reserve (n);
+  for (const auto m : members)
+  {
+    Eigen::Vector3d normal = points.normals[m].cast<double> ();
+    if (normal.dot (c.normal) < 0.0)
+      normal = -normal; // unoriented normals: the angle is taken on the plane's side
+    turn.emplace_back ((points.points[m].cast<double> () - origin).dot (c.along),
+                       std::atan2 (normal.dot (c.along), normal.dot (c.normal)));
+  }
+  std::sort (turn.begin (), turn.end ());
+  double st = 0.0, sa = 0.0, stt = 0.0, sta = 0.0, saa = 0.0;
+  for (const auto& q : turn)
+  {
+    st += q.first;
+    sa += q.second;
+    stt += q.first * q.first;
+    sta += q.first * q.second;
+    saa += q.second * q.second;
+  }
+  const double count = static_cast<double> (n);
+  const double var_t = stt - st * st / count, var_a = saa - sa * sa / count, cov = sta - st * sa / count;
+  const double line = std::max (0.0, var_a - (var_t > 0.0 ? cov * cov / var_t : 0.0));
+  // Best single step by prefix sums over the sorted positions.
+  const std::size_t min_side = std::max<std::size_t> (n / 20, 3);
+  double step = HUGE_VAL, left = 0.0, left_sq = 0.0;
+  for (std::size_t k = 0; k + 1 < n; ++k)
+  {
+    left += turn[k].second;
+    left_sq += turn[k].second * turn[k].second;
+    const double nl = static_cast<double> (k + 1), nr = count - nl;
+    if (k + 1 < min_side || n - (k + 1) < min_side)
+      continue;
+    const double right = sa - left, right_sq = saa - left_sq;
+    step = std::min (step, (left_sq - left * left / nl) + (right_sq - right * right / nr));
+  }
+  if (!(step > 0.0))
+    return HUGE_VAL; // the normals take two values exactly: a fold, not a turn
+  return line / step;
 }
 } // namespace rspd
 } // namespace pcl

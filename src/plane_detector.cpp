@@ -328,7 +328,9 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
 #pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
   for (std::ptrdiff_t p = 0; p < count; ++p)
   {
-    curved[p] = isCurvedPatch (measureCurvature (points, patches[p].members), patches[p].mnd, params);
+    const PlaneCurvature c = measureCurvature (points, patches[p].members);
+    curved[p] = isCurvedPatch (c, patches[p].mnd, params) &&
+                normalTurnRatio (points, patches[p].members, c) < params.curved_fold_ratio;
   }
   std::size_t dropped = 0;
   std::size_t kept = 0;

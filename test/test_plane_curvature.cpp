@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <random>
 
 using namespace pcl::rspd;
@@ -223,4 +224,100 @@ TEST (FlatPatch, CurvedCheckIgnoresABendNoiseExplains)
     return;
   }
   FAIL () << "no 16-sample flat patch with a chance share above 0.3 in 200 draws";
+}
+
+namespace
+{
+/** Adds n samples on faces folded about lines parallel to the y axis: face f spans x' in
+  * [f w, (f + 1) w] along its own direction, each face turned by \a fold radians from the one before;
+  * exact positions, normals with Gaussian noise of \a normal_noise radians about the face's normal. */
+std::vector<std::uint32_t>
+addFoldedFaces (PointSet& s, int faces, double w, double fold, int n, double normal_noise, std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  std::normal_distribution<double> g (0.0, normal_noise);
+  std::vector<std::uint32_t> added;
+  Eigen::Vector2d start (0.0, 0.0); // (x, z) where each face starts
+  for (int f = 0; f < faces; ++f)
+  {
+    const double a = f * fold;
+    const Eigen::Vector2d dir (std::cos (a), std::sin (a)), nrm (-std::sin (a), std::cos (a));
+    for (int i = 0; i < n / faces; ++i)
+    {
+      const Eigen::Vector2d p = start + w * u (rng) * dir;
+      const double t = g (rng);
+      const Eigen::Vector2d q = std::cos (t) * nrm + std::sin (t) * dir;
+      added.push_back (static_cast<std::uint32_t> (s.points.size ()));
+      s.points.emplace_back (static_cast<float> (p.x ()), static_cast<float> (u (rng)), static_cast<float> (p.y ()));
+      s.normals.emplace_back (static_cast<float> (q.x ()), 0.0f, static_cast<float> (q.y ()));
+      s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+    }
+    start += w * dir;
+  }
+  return added;
+}
+} // namespace
+
+TEST (NormalTurnRatio, SmoothOnACurvedSurfaceAndStepwiseOverAFold)
+{
+  // A cylinder's arc turns its normals in proportion to the position: far below 1/2.
+  PointSet arc;
+  const auto a = addCylinderArc (arc, 1.0, 0.3, 2000, 0.001f);
+  EXPECT_LT (normalTurnRatio (arc, a, measureCurvature (arc, a)), 0.05);
+  // Two faces 30° apart: one step, at least 1; three faces over two 20° edges, normal noise 0.1 rad:
+  // (σ² + Δ²/12) / (σ² + Δ²/6) = 0.66 (less where the outer faces' positions, projected onto the
+  // plane, shrink: about 1/2 without noise).
+  std::mt19937 rng (4);
+  PointSet two;
+  const auto b = addFoldedFaces (two, 2, 0.5, 30.0 * M_PI / 180.0, 2000, 0.05, rng);
+  EXPECT_GE (normalTurnRatio (two, b, measureCurvature (two, b)), 1.0);
+  PointSet three;
+  const auto c = addFoldedFaces (three, 3, 0.4, 20.0 * M_PI / 180.0, 3000, 0.1, rng);
+  const double r3 = normalTurnRatio (three, c, measureCurvature (three, c));
+  EXPECT_GT (r3, 0.5);
+  EXPECT_LT (r3, 1.0);
+  // Many narrow faces approach the arc again (a faceted curved surface): below 1/2.
+  PointSet many;
+  const auto d = addFoldedFaces (many, 8, 0.15, 6.0 * M_PI / 180.0, 4000, 0.02, rng);
+  EXPECT_LT (normalTurnRatio (many, d, measureCurvature (many, d)), 0.5);
+}
+
+TEST (NormalTurnRatio, NoisyNormalsOnAnArcStayBelowHalfWhileTheTurnExceedsSevenTimesTheNoise)
+{
+  // The arc turns the normal by 0.6 rad across it: σ² / (σ² + 0.6²/48) is 0.25 for normal noise of
+  // 0.05 rad (0.6 rad is 12 σ) and 0.57 for 0.1 rad (6 σ, within the √48 ≈ 7 σ a fold can mimic).
+  const auto ratioAt = [] (float sigma) {
+    std::mt19937 rng (2);
+    std::normal_distribution<float> g (0.0f, sigma);
+    PointSet arc;
+    const auto a = addCylinderArc (arc, 1.0, 0.3, 3000, 0.002f);
+    for (auto& n : arc.normals)
+      n = Eigen::AngleAxisf (g (rng), Eigen::Vector3f::UnitY ()) * n;
+    return std::make_pair (normalTurnRatio (arc, a, measureCurvature (arc, a)), arc);
+  };
+  const auto quiet = ratioAt (0.05f);
+  EXPECT_GT (quiet.first, 0.18);
+  EXPECT_LT (quiet.first, 0.32);
+  const double noisy = ratioAt (0.1f).first;
+  EXPECT_GT (noisy, 0.5);
+  EXPECT_LT (noisy, 0.65);
+  PointSet arc = quiet.second;
+  std::vector<std::uint32_t> a (arc.points.size ());
+  std::iota (a.begin (), a.end (), 0u);
+  const double r = quiet.first;
+  // Unoriented normals (half of them flipped) give the same ratio.
+  for (std::size_t i = 0; i < arc.normals.size (); i += 2)
+    arc.normals[i] = -arc.normals[i];
+  EXPECT_NEAR (normalTurnRatio (arc, a, measureCurvature (arc, a)), r, 1e-9);
+}
+
+TEST (NormalTurnRatio, TooFewSamplesOrNoBendCannotBeMeasured)
+{
+  PointSet arc;
+  const auto a = addCylinderArc (arc, 1.0, 0.3, 11, 0.001f);
+  EXPECT_EQ (normalTurnRatio (arc, a, measureCurvature (arc, a)), HUGE_VAL);
+  std::mt19937 rng (3);
+  PointSet flat;
+  const auto f = addNoisyRectangle (flat, 1.0, 1.0, 500, 0.0f, rng);
+  EXPECT_EQ (normalTurnRatio (flat, f, measureCurvature (flat, f)), HUGE_VAL); // no residual, no direction
 }

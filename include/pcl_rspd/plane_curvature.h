@@ -9,6 +9,8 @@
 #include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/point_set.h>
 
+#include <Eigen/Core>
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -25,6 +27,8 @@ struct PlaneCurvature
   double half_bend = 0.0;    ///< radians the quadric's normal turns from the middle of the samples to their rim
   double minor_extent = 0.0; ///< extent of the samples along their plane's second principal axis (its narrow side)
   std::size_t samples = 0;   ///< samples measured; 0 when too few (fewer than 12) or no residual
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero (); ///< the samples' least-squares plane normal
+  Eigen::Vector3d along = Eigen::Vector3d::Zero ();  ///< in that plane, the quadric's most curved direction
 };
 
 /** \brief Fit w = a u² + b uv + c v² + d u + e v + f over the samples' least-squares plane (u, v in
@@ -66,5 +70,19 @@ isFlatPatch (const PointSet& points, const DetectorParameters& params, const Pla
   * six coefficients interpolate): not judged. */
 bool
 isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& params);
+
+/** \brief How smoothly the sample normals turn across a plane: the residual of their angle, measured
+  * along the quadric's most curved direction (PlaneCurvature::along), about a straight line in the
+  * position along it, over its residual about the best single step (two levels, each side at least a
+  * twentieth of the samples).
+  *
+  * On a curved surface the normal turns in proportion to the position: the line fits and the ratio
+  * is σ² / (σ² + T²/48) for normal noise σ and a turn T across the samples, below 1/2 once T exceeds
+  * √48 ≈ 7 σ. Two faces meeting at an edge turn in one step: the ratio is at least 1. Three equal
+  * faces over two edges give (σ² + Δ²/12) / (σ² + Δ²/6) for a turn Δ per edge: from about 1/2
+  * (no noise) to 1. Used by the curved-surface check (DetectorParameters::curved_fold_ratio).
+  * \return the ratio; +inf when it cannot be measured (fewer than 12 samples, no curved direction) */
+double
+normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c);
 } // namespace rspd
 } // namespace pcl

@@ -151,7 +151,8 @@ struct RobustPlane
   *    component-wise medians of Eqs. 3-4 follow the cloud's axes; the phases run instead in the frame
   *    of the dominant normal directions (pcl::rspd::dominantFrame), so a rotated cloud gives the
   *    same planes, and the cells of a scene not aligned with its axes hold one wall, not a slice of two;
-  *  - a curved-surface check is available, off by default (setCurvedPlaneCheck(true)).
+  *  - a curved-surface check (setCurvedPlaneCheck, on by default) drops planes whose samples bend
+  *    and whose normals turn smoothly: facets of pipes, tanks, pillars and balls.
   *
   * Without setInputNormals, normals are estimated by PCA over the same k-neighbourhoods that form
   * the growth graph. Where noise along the normal is as large as such a neighbourhood (a million
@@ -521,15 +522,26 @@ public:
   bool
   getOutlierSeedRetest () const { return params_.retest_outlier_seeds; }
 
-  /** \brief Curved-surface check (default off, as the paper): a plane is dropped when a quadric
+  /** \brief Curved-surface check (default on; false = the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the
-    * surface normal by more than the plane's MND between its middle and its rim (a facet of a pipe,
-    * tank, pillar or ball). See pcl::rspd::DetectorParameters::min_curvature_share. */
+    * surface normal by more than half the plane's MND between its middle and its rim (a facet of a
+    * pipe, tank, pillar or ball), unless its normals turn in steps, as over the edges of a fold (see
+    * setCurvedFoldRatio). See pcl::rspd::DetectorParameters::min_curvature_share. */
   void
   setCurvedPlaneCheck (bool enable);
   /** \brief Whether curved-surface facets are dropped. */
   bool
   getCurvedPlaneCheck () const { return params_.curved_plane_check; }
+
+  /** \brief The curved-surface check drops a plane only if the residual of its normals' turn about a
+    * line in the position is below this share of that about one step (default 0.5: a fold over up to
+    * three faces is kept for the bent-plane split; +inf: every plane the quadric calls curved is
+    * dropped). Must be positive. See pcl::rspd::DetectorParameters::curved_fold_ratio. */
+  void
+  setCurvedFoldRatio (double ratio);
+  /** \brief The curved-surface check's fold ratio. */
+  double
+  getCurvedFoldRatio () const { return params_.curved_fold_ratio; }
 
   /** \brief Small seeds' MND floor (default true; false = a seed's own MND): a seed of the
     * small-plane pass gets at least the MND of the tightest plane grown, since the normals of its few

@@ -432,6 +432,18 @@ RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setCurvedFoldRatio (double ratio)
+{
+  if (!(ratio > 0.0) || std::isnan (ratio))
+  {
+    PCL_ERROR ("[pcl::%s::setCurvedFoldRatio] the ratio must be positive (got %g)\n", getClassName ().c_str (), ratio);
+    return;
+  }
+  params_.curved_fold_ratio = ratio;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setSmallSeedMndFloor (bool enable)
 {
   params_.small_seed_mnd_floor = enable;
