@@ -24,7 +24,7 @@ labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches)
 
 std::size_t
 growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
-             std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags)
+             std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags, const PointSet* trimmed)
 {
   if (flags && flags->size () != points.size ())
     flags->assign (points.size (), 0);
@@ -47,6 +47,7 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
     if (flags && patch.grown)
       continue;
     ++stamp;
+    const auto& normals = (patch.trimmed && trimmed) ? trimmed->normals : points.normals;
     // The queue is the member list itself: members are popped in order and new ones appended.
     for (std::size_t head = 0; head < patch.members.size (); ++head)
     {
@@ -62,7 +63,7 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
           open = true;
           return;
         }
-        if (patch.isInlier (points.points[n], points.normals[n]))
+        if (patch.isInlier (points.points[n], normals[n]))
         {
           labels[n] = static_cast<std::uint32_t> (p);
           patch.members.push_back (n);
@@ -85,7 +86,7 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
 
 std::size_t
 reestimateGrownPatches (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
-                        std::size_t* kept)
+                        std::size_t* kept, const PointSet* trimmed)
 {
   std::size_t updated = 0, refused = 0;
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (patches.size ());
@@ -99,7 +100,7 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
       continue;
     ++updated;
     PlaneEstimate estimate;
-    if (!estimatePlane (points, patch.members, params, estimate))
+    if (!estimatePlane ((patch.trimmed && trimmed) ? *trimmed : points, patch.members, params, estimate))
     {
       patch.estimate_size = patch.members.size (); // keep the old plane; do not retry forever
       continue;

@@ -47,6 +47,30 @@ TEST (PatchGrowth, NormalDeviationLimitsGrowth)
     EXPECT_EQ (labels[i] == 0, s.points[i].x () < 0.5f) << i;
 }
 
+TEST (PatchGrowth, APatchFoundOnTrimmedNormalsGrowsOnThem)
+{
+  // Half of a plane's normals bent by 16.7° (as PCA normals near a rim), their trimmed copies true:
+  // a patch marked trimmed reads the copies and takes the whole plane, an unmarked one stops at the
+  // bend, and without the copies the mark changes nothing.
+  PointSet s;
+  const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20, 20);
+  PointSet trimmed = s;
+  for (std::size_t i = 0; i < s.size (); ++i)
+    if (s.points[i].x () > 0.5f)
+      s.normals[i] = Eigen::Vector3f (0.3f, 0.0f, 1.0f).normalized ();
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  const auto grown = [&] (bool mark, const PointSet* copies) {
+    std::vector<PlanarPatch> patches{rspd_test::makePatch ({a[0]}, {0, 0, 0}, {0, 0, 1}, 0.01, 10.0 * M_PI / 180.0)};
+    patches[0].trimmed = mark;
+    auto labels = labelSamples (s.size (), patches);
+    growPatches (s, g, patches, labels, nullptr, copies);
+    return patches[0].members.size ();
+  };
+  EXPECT_EQ (grown (true, &trimmed), s.size ());
+  EXPECT_EQ (grown (false, &trimmed), s.size () / 2);
+  EXPECT_EQ (grown (true, nullptr), s.size () / 2);
+}
+
 TEST (PatchGrowth, LeastNoisyPatchGrowsFirst)
 {
   // Two seeds on the same plane: the one with the lower MND grows first and takes everything.

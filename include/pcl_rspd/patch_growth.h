@@ -51,11 +51,14 @@ enum SampleFlag : std::uint8_t
   *   flags, the caller keeps every labelled sample labelled between calls (as grow-merge does), and
   *   a patch already grown with its current plane and members (PlanarPatch::grown) is skipped: each
   *   neighbour still free was refused by that same plane, so growing it again would add nothing.
+  * \param[in] trimmed if not null: the same samples with other normals (the trimmed ones of what
+  *   growth left), read instead of \a points' normals by the patches marked PlanarPatch::trimmed
   * \return samples added
   */
 std::size_t
 growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
-             std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags = nullptr);
+             std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags = nullptr,
+             const PointSet* trimmed = nullptr);
 
 /** \brief Sec. 3.5: re-estimate C, N, MDP and MND of every patch that grew by more than
   * DetectorParameters::update_growth_ratio since its last estimate. Members are kept; T1-T3 are not
@@ -65,10 +68,11 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
   * \param[in] params constants
   * \param[in,out] patches patches; each one measured is marked as estimated at its current size
   * \param[out] kept if not null: re-estimates refused as failing T2
+  * \param[in] trimmed if not null: normals read by the patches marked PlanarPatch::trimmed (see growPatches)
   * \return patches measured (updated or kept) */
 std::size_t
 reestimateGrownPatches (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
-                        std::size_t* kept = nullptr);
+                        std::size_t* kept = nullptr, const PointSet* trimmed = nullptr);
 
 } // namespace rspd
 } // namespace pcl

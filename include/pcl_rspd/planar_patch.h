@@ -59,6 +59,10 @@ struct PlanarPatch
   /** Seeded by a group of thick cells (DetectorParameters::join_thick_cells): noisy by nature, its
     * MND lets only flat seeds of the small-plane pass in, as a retested plane's does. */
   bool joined = false;
+  /** Seeded on the trimmed normals of what growth left (DetectorParameters::left_normal_refit, its
+    * second split) with DetectorParameters::trimmed_seed_growth: grown and re-estimated on those
+    * normals, where the PCA normals it was not found on bend. */
+  bool trimmed = false;
 
   /** \brief Take C, N, MDP and MND from \a estimate, and remember the current size as estimated. */
   void

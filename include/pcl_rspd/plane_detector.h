@@ -136,6 +136,15 @@ struct DetectorParameters
     * caller's normals (setLeftNormalRefitOnGivenNormals, default on) and, on request, for normals it
     * estimates by PCA (setLeftNormalRefit, default off for its time). false = the paper. */
   bool left_normal_refit = false;
+  /** \brief Departure (with left_normal_refit): a seed of the second split, found on the trimmed
+    * normals, grows and is re-estimated on them in the grow-merge that follows the small-plane pass
+    * (other planes read the PCA normals); it is not judged again once grown. On the PCA normals such a
+    * seed of a small plane often cannot grow: near its rims they bend by more than its MND, and it
+    * stays below ε (the room at 30,000 points on PCL's k = 50 normals: a table's front panel of 106
+    * samples and a cabinet side of 124 seeded with 20 and 16, dropped). Judged once grown, a side of
+    * the boxes at 100,000 points grown over a neighbour's edge strip was dropped whole (see the seed
+    * loop in detectPlanes). false = such seeds grow on the PCA normals as every other. */
+  bool trimmed_seed_growth = true;
   /** \brief Departure (small planes at a rim), used by the small-cell pass only: a cell that passes
     * T1 and T2 but fails T3 is tested again on its own inliers, and seeds a plane if they pass. The
     * pass's cells cannot shrink below k + 1 samples, and where a small plane meets others (a table's

@@ -93,7 +93,8 @@ struct RobustPlane
   *    setLeftNormalRefit(false) for the paper): that pass
   *    splits a second time the samples still left, on the normals of their neighbourhoods'
   *    reweighted least-trimmed-squares planes, with the same tests for a seed and one more (no
-  *    thicker than the thickest plane found); growth and every later pass keep the normals they had.
+  *    thicker than the thickest plane found); a seed found so grows on those normals
+  *    (setTrimmedSeedGrowth), every other plane and every later pass on the normals they had.
   *    A small plane's normals bend towards its neighbours over most of it (a table's front panel at
   *    100,000 points), and T3 then fails every cell of it. On by default for the caller's normals,
   *    whose scale was chosen without this cloud's small planes in view and which leave the time of
@@ -328,7 +329,7 @@ public:
     * passes keep the PCA normals. Applies only to normals estimated here by PCA (not with
     * setNormalFit(TrimmedPlane), where every normal is trimmed already; normals given with
     * setInputNormals have setLeftNormalRefitOnGivenNormals). See
-    * pcl::rspd::DetectorParameters::left_normal_refit. */
+    * pcl::rspd::DetectorParameters::left_normal_refit and setTrimmedSeedGrowth. */
   void
   setLeftNormalRefit (bool enable);
   /** \brief Whether the left samples' normals are refitted (normals estimated here). */
@@ -348,6 +349,16 @@ public:
   /** \brief Whether the left samples' normals are refitted when the caller gives normals. */
   bool
   getLeftNormalRefitOnGivenNormals () const { return given_normals_left_refit_; }
+
+  /** \brief With the left samples' normals refitted: a seed found on the trimmed normals grows and is
+    * re-estimated on them (default true; false = on the normals every other plane reads, where a
+    * small plane's seed often cannot grow past its bent rims and stays below ε). See
+    * pcl::rspd::DetectorParameters::trimmed_seed_growth. */
+  void
+  setTrimmedSeedGrowth (bool enable);
+  /** \brief Whether seeds found on the trimmed normals grow on them. */
+  bool
+  getTrimmedSeedGrowth () const { return params_.trimmed_seed_growth; }
 
   /** \brief Noisy given normals (default true, with setNormalScale(Automatic); false = the caller's
     * normals are always used as given): when most of the cloud's k-neighbourhoods resolve no surface

@@ -425,6 +425,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setOutlierSeedRetest (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setTrimmedSeedGrowth (bool enable)
+{
+  params_.trimmed_seed_growth = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 {
   params_.curved_plane_check = enable;
