@@ -119,17 +119,19 @@ isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& pa
          c.share <= 0.999 && c.half_bend >= 0.5 * mnd;
 }
 
-double
-normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c)
+namespace
 {
-  const std::size_t n = members.size ();
-  if (n < 12 || c.samples == 0 || !(c.along.squaredNorm () > 0.0))
-    return HUGE_VAL;
-  // (position along the curved direction, signed angle of the normal towards it), both about the
-  // first member: only differences matter, and the offsets stay small wherever the cloud lies.
-  const Eigen::Vector3d origin = points.points[members.front ()].cast<double> ();
+/** Each member's (position along the curved direction, signed angle of its normal towards it), both
+  * about the first member: only differences matter, and the offsets stay small wherever the cloud
+  * lies. Empty when the turn cannot be measured (fewer than 12 members, no curved direction). */
+std::vector<std::pair<double, double>>
+normalTurnSamples (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c)
+{
   std::vector<std::pair<double, double>> turn;
-  turn.reserve (n);
+  if (members.size () < 12 || c.samples == 0 || !(c.along.squaredNorm () > 0.0))
+    return turn;
+  const Eigen::Vector3d origin = points.points[members.front ()].cast<double> ();
+  turn.reserve (members.size ());
   for (const auto m : members)
   {
     Eigen::Vector3d normal = points.normals[m].cast<double> ();
@@ -138,6 +140,17 @@ normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& membe
     turn.emplace_back ((points.points[m].cast<double> () - origin).dot (c.along),
                        std::atan2 (normal.dot (c.along), normal.dot (c.normal)));
   }
+  return turn;
+}
+} // namespace
+
+double
+normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c)
+{
+  std::vector<std::pair<double, double>> turn = normalTurnSamples (points, members, c);
+  const std::size_t n = turn.size ();
+  if (n == 0)
+    return HUGE_VAL;
   std::sort (turn.begin (), turn.end ());
   double st = 0.0, sa = 0.0, stt = 0.0, sta = 0.0, saa = 0.0;
   for (const auto& q : turn)
@@ -167,6 +180,27 @@ normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& membe
   if (!(step > 0.0))
     return HUGE_VAL; // the normals take two values exactly: a fold, not a turn
   return line / step;
+}
+
+double
+normalTurnAcross (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c)
+{
+  const std::vector<std::pair<double, double>> turn = normalTurnSamples (points, members, c);
+  if (turn.empty ())
+    return HUGE_VAL;
+  double st = 0.0, sa = 0.0, stt = 0.0, sta = 0.0;
+  for (const auto& q : turn)
+  {
+    st += q.first;
+    sa += q.second;
+    stt += q.first * q.first;
+    sta += q.first * q.second;
+  }
+  const double count = static_cast<double> (turn.size ());
+  const double var_t = stt - st * st / count, cov = sta - st * sa / count;
+  if (!(var_t > 0.0))
+    return HUGE_VAL;
+  return std::abs (cov / var_t) * std::sqrt (12.0 * var_t / count);
 }
 } // namespace rspd
 } // namespace pcl

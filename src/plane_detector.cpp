@@ -286,6 +286,19 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   }
 }
 
+/** Whether the normals of a grown plane its positions call bent do not turn with it
+  * (DetectorParameters::judge_normal_turn): a flat face whose quadric bends by chance. */
+bool
+normalsDenyBend (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch)
+{
+  if (!(params.judge_normal_turn > 0.0))
+    return false;
+  const PlaneCurvature c = measureCurvature (points, patch.members);
+  if (c.samples == 0 || !(0.5 * c.minor_extent > patch.mdp))
+    return false; // unmeasured, or a tube: judged by isFlatPatch alone
+  return normalTurnAcross (points, patch.members, c) < params.judge_normal_turn * 2.0 * c.half_bend;
+}
+
 /** The planes noisy seeds seeded, judged once grown: split where two flat planes meeting at an
   * edge explain one that is not flat (DetectorParameters::noisy_bent_split), then every one still
   * not flat dropped, with every plane under \a min_size samples. Each plane's flatness is measured
@@ -304,7 +317,8 @@ judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std:
     if (params.bend_confidence > 0.0)
       judge.bend_confidence = params.judge_bend_confidence;
     for (std::size_t p = 0; p < patches.size (); ++p)
-      flat[p] = !patches[p].retested || isFlatPatch (points, judge, patches[p], true);
+      flat[p] = !patches[p].retested || isFlatPatch (points, judge, patches[p], true) ||
+                normalsDenyBend (points, params, patches[p]);
   }
   std::size_t kept = 0;
   for (std::size_t p = 0; p < patches.size (); ++p)

@@ -321,3 +321,34 @@ TEST (NormalTurnRatio, TooFewSamplesOrNoBendCannotBeMeasured)
   const auto f = addNoisyRectangle (flat, 1.0, 1.0, 500, 0.0f, rng);
   EXPECT_EQ (normalTurnRatio (flat, f, measureCurvature (flat, f)), HUGE_VAL); // no residual, no direction
 }
+
+TEST (NormalTurnAcross, AnArcsNormalsTurnWithItAFlatFacesDoNot)
+{
+  // An arc of 0.6 rad: its normals turn by about that much across it, as its quadric does.
+  PointSet arc;
+  const auto a = addCylinderArc (arc, 1.0, 0.3, 3000, 0.002f);
+  const PlaneCurvature ca = measureCurvature (arc, a);
+  const double turn = normalTurnAcross (arc, a, ca);
+  EXPECT_NEAR (turn, 0.6, 0.06);
+  EXPECT_NEAR (turn, 2.0 * ca.half_bend, 0.1);
+  // A flat face with noisy positions and true normals: the quadric bends by chance, the normals by
+  // nothing, whatever the draw.
+  std::mt19937 rng (5);
+  int measured = 0;
+  for (int draw = 0; draw < 20; ++draw)
+  {
+    PointSet flat;
+    const auto f = addNoisyRectangle (flat, 1.5, 1.0, 200, 0.02f, rng);
+    const PlaneCurvature cf = measureCurvature (flat, f);
+    if (cf.samples == 0)
+      continue;
+    ++measured;
+    EXPECT_GT (cf.half_bend, 0.0);
+    EXPECT_LT (normalTurnAcross (flat, f, cf), 1e-6);
+  }
+  EXPECT_EQ (measured, 20);
+  // Too few samples: not measured.
+  PointSet few;
+  const auto s = addCylinderArc (few, 1.0, 0.3, 11, 0.001f);
+  EXPECT_EQ (normalTurnAcross (few, s, measureCurvature (few, s)), HUGE_VAL);
+}

@@ -84,5 +84,16 @@ isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& pa
   * \return the ratio; +inf when it cannot be measured (fewer than 12 samples, no curved direction) */
 double
 normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c);
+
+/** \brief How far the sample normals turn across a plane along the quadric's most curved direction
+  * (PlaneCurvature::along): the slope of their angle as a straight line in the position, times the
+  * extent a uniform spread with the positions' variance would have (√12 standard deviations). On an
+  * arc sampled evenly it is the arc's turn; on a flat plane, noise about 0. Compared with the
+  * quadric's own turn (twice PlaneCurvature::half_bend) it tells whether the normals confirm a bend
+  * the positions show (DetectorParameters::judge_normal_turn).
+  * \return the turn in radians; +inf when it cannot be measured (fewer than 12 samples, no curved
+  * direction) */
+double
+normalTurnAcross (const PointSet& points, const std::vector<std::uint32_t>& members, const PlaneCurvature& c);
 } // namespace rspd
 } // namespace pcl

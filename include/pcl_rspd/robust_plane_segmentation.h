@@ -633,6 +633,15 @@ public:
   /** \brief The grown noisy planes' bend confidence. */
   double
   getGrownPlaneBendConfidence () const { return params_.judge_bend_confidence; }
+  /** \brief Where a noisy seed's plane, once grown, bends beyond chance, it is still kept if its
+    * normals turn across it by less than this share of the bend (default 0.25; 0 = judged on the
+    * positions' bend alone). Must be at least 0. See
+    * pcl::rspd::DetectorParameters::judge_normal_turn. */
+  void
+  setGrownPlaneNormalTurn (double share);
+  /** \brief The grown noisy planes' normal-turn share. */
+  double
+  getGrownPlaneNormalTurn () const { return params_.judge_normal_turn; }
 
   /** \brief Last assignment pass once grow-merge is stable (default Tails; None = the paper): samples
     * growth left out join a neighbouring plane: at edges by distance alone (Edges), and inside a

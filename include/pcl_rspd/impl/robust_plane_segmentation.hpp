@@ -519,6 +519,19 @@ RobustPlaneSegmentation<PointT, NormalT>::setGrownPlaneBendConfidence (double co
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setGrownPlaneNormalTurn (double share)
+{
+  if (!(share >= 0.0) || !std::isfinite (share))
+  {
+    PCL_ERROR ("[pcl::%s::setGrownPlaneNormalTurn] the share must be finite and at least 0 (got %g)\n",
+               getClassName ().c_str (), share);
+    return;
+  }
+  params_.judge_normal_turn = share;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setFinalAssignment (pcl::rspd::FinalAssignment mode)
 {
   params_.final_assignment = mode;
