@@ -101,11 +101,22 @@ chanceBendShare (std::size_t samples, double confidence)
 }
 
 bool
+isTube (const PlaneCurvature& c, double mdp)
+{
+  return c.samples > 0 && !(0.5 * c.minor_extent > mdp);
+}
+
+bool
 isFlatPatch (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch, bool grown)
 {
-  const PlaneCurvature c = measureCurvature (points, patch.members);
+  return isFlatPatch (measureCurvature (points, patch.members), params, patch, grown);
+}
+
+bool
+isFlatPatch (const PlaneCurvature& c, const DetectorParameters& params, const PlanarPatch& patch, bool grown)
+{
   const bool calibrated = params.bend_confidence > 0.0;
-  if (calibrated && grown && c.samples > 0 && !(0.5 * c.minor_extent > patch.mdp))
+  if (calibrated && grown && isTube (c, patch.mdp))
     return false; // a tube: its noise band is as wide as half its narrow side
   if (calibrated && c.share < chanceBendShare (c.samples, params.bend_confidence))
     return true;  // noise explains the bend
@@ -142,6 +153,32 @@ normalTurnSamples (const PointSet& points, const std::vector<std::uint32_t>& mem
   }
   return turn;
 }
+/** Centred sums of the (position, angle) pairs: the variance of the positions and of the angles and
+  * their covariance, each times the count. */
+struct TurnMoments
+{
+  double count = 0.0, var_t = 0.0, var_a = 0.0, cov = 0.0;
+};
+
+TurnMoments
+turnMoments (const std::vector<std::pair<double, double>>& turn)
+{
+  double st = 0.0, sa = 0.0, stt = 0.0, sta = 0.0, saa = 0.0;
+  for (const auto& q : turn)
+  {
+    st += q.first;
+    sa += q.second;
+    stt += q.first * q.first;
+    sta += q.first * q.second;
+    saa += q.second * q.second;
+  }
+  TurnMoments m;
+  m.count = static_cast<double> (turn.size ());
+  m.var_t = stt - st * st / m.count;
+  m.var_a = saa - sa * sa / m.count;
+  m.cov = sta - st * sa / m.count;
+  return m;
+}
 } // namespace
 
 double
@@ -152,19 +189,16 @@ normalTurnRatio (const PointSet& points, const std::vector<std::uint32_t>& membe
   if (n == 0)
     return HUGE_VAL;
   std::sort (turn.begin (), turn.end ());
-  double st = 0.0, sa = 0.0, stt = 0.0, sta = 0.0, saa = 0.0;
+  const TurnMoments m = turnMoments (turn);
+  const double line = std::max (0.0, m.var_a - (m.var_t > 0.0 ? m.cov * m.cov / m.var_t : 0.0));
+  // Best single step by prefix sums over the sorted positions.
+  double sa = 0.0, saa = 0.0;
   for (const auto& q : turn)
   {
-    st += q.first;
     sa += q.second;
-    stt += q.first * q.first;
-    sta += q.first * q.second;
     saa += q.second * q.second;
   }
-  const double count = static_cast<double> (n);
-  const double var_t = stt - st * st / count, var_a = saa - sa * sa / count, cov = sta - st * sa / count;
-  const double line = std::max (0.0, var_a - (var_t > 0.0 ? cov * cov / var_t : 0.0));
-  // Best single step by prefix sums over the sorted positions.
+  const double count = m.count;
   const std::size_t min_side = std::max<std::size_t> (n / 20, 3);
   double step = HUGE_VAL, left = 0.0, left_sq = 0.0;
   for (std::size_t k = 0; k + 1 < n; ++k)
@@ -188,19 +222,10 @@ normalTurnAcross (const PointSet& points, const std::vector<std::uint32_t>& memb
   const std::vector<std::pair<double, double>> turn = normalTurnSamples (points, members, c);
   if (turn.empty ())
     return HUGE_VAL;
-  double st = 0.0, sa = 0.0, stt = 0.0, sta = 0.0;
-  for (const auto& q : turn)
-  {
-    st += q.first;
-    sa += q.second;
-    stt += q.first * q.first;
-    sta += q.first * q.second;
-  }
-  const double count = static_cast<double> (turn.size ());
-  const double var_t = stt - st * st / count, cov = sta - st * sa / count;
-  if (!(var_t > 0.0))
+  const TurnMoments m = turnMoments (turn);
+  if (!(m.var_t > 0.0))
     return HUGE_VAL;
-  return std::abs (cov / var_t) * std::sqrt (12.0 * var_t / count);
+  return std::abs (m.cov / m.var_t) * std::sqrt (12.0 * m.var_t / m.count);
 }
 } // namespace rspd
 } // namespace pcl

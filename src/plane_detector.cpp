@@ -286,15 +286,15 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   }
 }
 
-/** Whether the normals of a grown plane its positions call bent do not turn with it
+/** Whether the normals of a grown plane its positions call bent (curvature \a c) do not turn with it
   * (DetectorParameters::judge_normal_turn): a flat face whose quadric bends by chance. */
 bool
-normalsDenyBend (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch)
+normalsDenyBend (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch,
+                 const PlaneCurvature& c)
 {
   if (!(params.judge_normal_turn > 0.0))
     return false;
-  const PlaneCurvature c = measureCurvature (points, patch.members);
-  if (c.samples == 0 || !(0.5 * c.minor_extent > patch.mdp))
+  if (c.samples == 0 || isTube (c, patch.mdp))
     return false; // unmeasured, or a tube: judged by isFlatPatch alone
   return normalTurnAcross (points, patch.members, c) < params.judge_normal_turn * 2.0 * c.half_bend;
 }
@@ -317,8 +317,15 @@ judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std:
     if (params.bend_confidence > 0.0)
       judge.bend_confidence = params.judge_bend_confidence;
     for (std::size_t p = 0; p < patches.size (); ++p)
-      flat[p] = !patches[p].retested || isFlatPatch (points, judge, patches[p], true) ||
-                normalsDenyBend (points, params, patches[p]);
+    {
+      if (!patches[p].retested)
+      {
+        flat[p] = 1;
+        continue;
+      }
+      const PlaneCurvature c = measureCurvature (points, patches[p].members);
+      flat[p] = isFlatPatch (c, judge, patches[p], true) || normalsDenyBend (points, params, patches[p], c);
+    }
   }
   std::size_t kept = 0;
   for (std::size_t p = 0; p < patches.size (); ++p)
@@ -733,6 +740,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   if (st.small_seeds > 0 || st.retested_seeds > 0)
   {
     growMergeUntilStable (points, graph, params, patches, labels, flags, st, trimmed_seeds ? &refitted : nullptr);
+    refitted = PointSet (); // read by that grow-merge alone
     patches.erase (std::remove_if (patches.begin (), patches.end (),
                                    [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
                    patches.end ());

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -770,4 +771,18 @@ TEST (RobustPlaneSegmentation, ConvexHullOfManyPointsIsTheHull)
         ASSERT_GE (cross (a, b, p), -1e-9) << "every point inside, n = " << n;
     }
   }
+}
+
+TEST (RobustPlaneSegmentation, CurvedFoldRatioRefusesWhatIsNotPositive)
+{
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  EXPECT_TRUE (seg.getCurvedPlaneCheck ());
+  EXPECT_DOUBLE_EQ (seg.getCurvedFoldRatio (), 0.5);
+  for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN ()})
+  {
+    seg.setCurvedFoldRatio (bad); // refused with PCL_ERROR
+    EXPECT_DOUBLE_EQ (seg.getCurvedFoldRatio (), 0.5) << bad;
+  }
+  seg.setCurvedFoldRatio (std::numeric_limits<double>::infinity ()); // every curved plane dropped
+  EXPECT_EQ (seg.getCurvedFoldRatio (), std::numeric_limits<double>::infinity ());
 }

@@ -62,6 +62,15 @@ chanceBendShare (std::size_t samples, double confidence);
 bool
 isFlatPatch (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch, bool grown);
 
+/** \brief isFlatPatch on the patch's curvature \a c measured already (measureCurvature of its members). */
+bool
+isFlatPatch (const PlaneCurvature& c, const DetectorParameters& params, const PlanarPatch& patch, bool grown);
+
+/** \brief Whether a measured patch is a tube: its noise band \a mdp as wide as half its narrow side
+  * (see isFlatPatch). */
+bool
+isTube (const PlaneCurvature& c, double mdp);
+
 /** \brief Whether a plane is a facet of a curved surface (DetectorParameters::min_curvature_share):
   * the bend explains at least min_curvature_share of the residual and more than noise would
   * (chanceBendShare), and turns the normal by at least half the plane's MND (a facet of a curved

@@ -441,7 +441,7 @@ RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedFoldRatio (double ratio)
 {
-  if (!(ratio > 0.0) || std::isnan (ratio))
+  if (!(ratio > 0.0)) // NaN too
   {
     PCL_ERROR ("[pcl::%s::setCurvedFoldRatio] the ratio must be positive (got %g)\n", getClassName ().c_str (), ratio);
     return;
