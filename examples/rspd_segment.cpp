@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -81,6 +81,9 @@ const char* const kHelp =
     "  --noisy-groups on|off  small-plane seeds too noisy alone are joined where they touch\n"
     "                   and agree; a group of eps samples that passes the tests, is flat and is\n"
     "                   at most twice as noisy as the planes found seeds a plane (default on)\n"
+    "  --noisy-lone on|off  such a seed that joins no other seeds a plane alone on the same\n"
+    "                   terms but eps, which its grown plane must reach (default on; needs\n"
+    "                   --noisy-groups on)\n"
     "  --step-sides on|off  where two parallel planes make a step deeper than their noise bands,\n"
     "                   a point within the other plane's band goes to it when it holds more of\n"
     "                   the point's neighbours (default on; off = the paper)\n"
@@ -160,6 +163,7 @@ struct Options
   bool thick_join = true;
   bool small_thick_join = true;
   bool noisy_groups = true;
+  bool noisy_lone = true;
   bool support = true;
   LeftNormals left_normals = LeftNormals::Auto;
   bool connected_parts = true;
@@ -268,6 +272,8 @@ parseArguments (int argc, char** argv)
       o.small_thick_join = option.choice ("on", "off");
     else if (arg == "--noisy-groups")
       o.noisy_groups = option.choice ("on", "off");
+    else if (arg == "--noisy-lone")
+      o.noisy_lone = option.choice ("on", "off");
     else if (arg == "--step-sides")
       o.step_sides = option.choice ("on", "off");
     else if (arg == "--left-normals")
@@ -456,6 +462,7 @@ run (const Options& o)
   seg.setThickCellJoin (o.thick_join);
   seg.setSmallPassThickCellJoin (o.small_thick_join);
   seg.setNoisySeedGroups (o.noisy_groups);
+  seg.setNoisyLoneSeeds (o.noisy_lone);
   seg.setSupportCheck (o.support);
   seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
   seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);

@@ -21,7 +21,7 @@ joinNoisySeeds (const PointSet& points, const NeighborGraph& graph, const Detect
 {
   std::vector<PlanarPatch> out;
   const std::size_t count = seeds.size ();
-  if (count < 2)
+  if (count == 0 || (count < 2 && !params.noisy_lone_seeds))
     return out;
   std::vector<std::uint32_t> owner (points.size (), kNoPatch);
   for (std::uint32_t a = 0; a < count; ++a)
@@ -53,7 +53,15 @@ joinNoisySeeds (const PointSet& points, const NeighborGraph& graph, const Detect
   for (const auto& group : groups)
   {
     if (group.size () < 2)
+    {
+      // A lone seed passed T1-T3 at the pass's cell size: no union to test again, and no ε yet (it
+      // must hold ε samples once grown, as every plane).
+      const PlanarPatch& seed = seeds[group.front ()];
+      if (params.noisy_lone_seeds && seed.mnd <= ratio * max_mnd && seed.mdp <= ratio * max_mdp &&
+          !bentAtAnEdge (points, seed.members, params) && isFlatPatch (points, params, seed, false))
+        out.push_back (seed);
       continue;
+    }
     std::vector<std::uint32_t> samples;
     for (const auto s : group)
       samples.insert (samples.end (), seeds[s].members.begin (), seeds[s].members.end ());

@@ -111,16 +111,31 @@ TEST (SeedGroups, GroupFarNoisierOrThickerThanThePlanesFoundSeedsNothing)
   EXPECT_EQ (joinNoisySeeds (s.set, s.graph, wide, s.seeds, 0.2 * maxMnd (s.seeds), 0.03).size (), 1u);
 }
 
-TEST (SeedGroups, FewerThanEpsilonSamplesOrALoneSeedSeedNothing)
+TEST (SeedGroups, GroupOfFewerThanEpsilonSamplesSeedsNothing)
 {
   const Scene s = makeScene (false);
   DetectorParameters big = parameters ();
   big.min_patch_size = 2000; // more than the face holds
   EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, big, s.seeds, maxMnd (s.seeds), 0.03).empty ());
+}
+
+TEST (SeedGroups, LoneSeedSeedsAloneOnTheGroupsTermsButEpsilon)
+{
+  // One seed of 100 samples against ε = 300: it joins no other, and seeds as it is (its grown plane
+  // must reach ε); without lone seeds, or noisier than twice the planes found, it seeds nothing.
+  const Scene s = makeScene (false);
   const std::vector<PlanarPatch> one (s.seeds.begin (), s.seeds.begin () + 1);
-  DetectorParameters small = parameters ();
-  small.min_patch_size = 50;
-  EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, small, one, maxMnd (s.seeds), 0.03).empty ());
+  const std::vector<PlanarPatch> out = joinNoisySeeds (s.set, s.graph, parameters (), one, maxMnd (s.seeds), 0.03);
+  ASSERT_EQ (out.size (), 1u);
+  EXPECT_EQ (out[0].members, one[0].members);
+  EXPECT_EQ (out[0].normal, one[0].normal);
+  EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, parameters (), one, 0.2 * one[0].mnd, 0.03).empty ());
+  EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, parameters (), one, maxMnd (s.seeds), 0.2 * one[0].mdp).empty ());
+  DetectorParameters off = parameters ();
+  off.noisy_lone_seeds = false;
+  EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, off, one, maxMnd (s.seeds), 0.03).empty ());
+  // Seeds that join a group are never also lone seeds: the whole face is still one plane.
+  EXPECT_EQ (joinNoisySeeds (s.set, s.graph, parameters (), s.seeds, 0.8 * maxMnd (s.seeds), 0.03).size (), 1u);
 }
 
 TEST (SeedGroups, FacesMeetingAtAnEdgeStayApart)

@@ -120,6 +120,15 @@ struct DetectorParameters
     * and 1.4 times, one more at 2.04 times kept out; a slab of outliers 5 times as thick, tank facets
     * 5 to 15 times as noisy. */
   double noisy_group_ratio = 2.0;
+  /** \brief Departure (lone noisy seeds, part of noisy_seed_groups): a noisy seed that joins no other
+    * seeds a plane by itself if it is within noisy_group_ratio of the planes found, flat and no edge
+    * band or noise-band layer; it passed T1-T3 as a cell of the pass, and, as every noisy seed, is
+    * judged flat again once grown and kept only if it then holds ε samples. A rough face whose seeds
+    * are few and apart has no group: the boxes with 15 % outliers at 300,000 points (ε = 300) on PCL's
+    * k = 50 normals, the σ = 3 cm box's two sides, 2,096 samples each, had one seed of 207 samples and
+    * three of 67-177 that did not agree (the thin one's band held too few of the others' samples).
+    * false = a seed too noisy alone seeds only in a group of ε samples. */
+  bool noisy_lone_seeds = true;
   /** \brief Departure (trimmed normals for what growth left, part of the small-cell pass): after
     * the pass's split on the PCA normals, the samples still left get the normal of their
     * k-neighbourhood's reweighted least-trimmed-squares plane (refineNormalsTrimmed) in a copy, and

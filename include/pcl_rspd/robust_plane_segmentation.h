@@ -604,6 +604,15 @@ public:
   /** \brief Whether groups of noisy small seeds may seed planes. */
   bool
   getNoisySeedGroups () const { return params_.noisy_seed_groups; }
+  /** \brief Lone noisy seeds (default true; false = a noisy seed seeds only in a group of ε samples):
+    * with the groups of noisy small seeds on, a noisy seed that joins no other seeds a plane alone if
+    * it is within the groups' ratio of the planes found, flat, and no edge band or noise-band layer;
+    * its grown plane must hold ε samples. See pcl::rspd::DetectorParameters::noisy_lone_seeds. */
+  void
+  setNoisyLoneSeeds (bool enable);
+  /** \brief Whether a lone noisy small seed may seed a plane. */
+  bool
+  getNoisyLoneSeeds () const { return params_.noisy_lone_seeds; }
   /** \brief How many times as noisy (MND) and thick (MDP) as the noisiest and thickest plane found
     * a group of noisy small seeds may be, at least 1 (default 2). See
     * pcl::rspd::DetectorParameters::noisy_group_ratio. */

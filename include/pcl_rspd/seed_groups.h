@@ -23,6 +23,12 @@ namespace rspd
   * - is at most DetectorParameters::noisy_group_ratio times as noisy (MND) and as thick (MDP) as
   *   the noisiest and the thickest plane found.
   *
+  * With DetectorParameters::noisy_lone_seeds, a seed that joins no other seeds alone on the last two
+  * terms (it passed T1-T3 as a cell of the pass; ε is asked of its grown plane): a rough face whose
+  * few seeds lie apart or disagree has no group (the boxes with 15 % outliers on PCL's k = 50
+  * normals: the roughest box's two sides, one seed of 207 samples against ε = 300, three of 67-177
+  * whose bands disagree).
+  *
   * Why: the first split seeds a plane only where one octree cell holds ε of its samples within T1's
   * angle. A rough face that two cells of the grid share, each cell also holding a piece of the next
   * face, gets no cell (the boxes with 15 % outliers: the outliers widen the root cell, the roughest

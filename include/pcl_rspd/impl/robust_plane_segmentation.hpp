@@ -486,6 +486,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setNoisySeedGroups (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNoisyLoneSeeds (bool enable)
+{
+  params_.noisy_lone_seeds = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setNoisySeedGroupRatio (double ratio)
 {
   if (!(ratio >= 1.0 && std::isfinite (ratio)))
