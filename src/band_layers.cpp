@@ -4,8 +4,12 @@
  */
 #include <pcl_rspd/band_layers.h>
 #include <pcl_rspd/bent_planes.h>      // bentAtAnEdge
+#include <pcl_rspd/normal_estimation.h> // resolveThreads
 #include <pcl_rspd/patch_growth.h>      // kNoPatch
+#include <pcl_rspd/patch_merge.h>       // normalsCompatible
 #include <pcl_rspd/robust_statistics.h> // medianInPlace, kMadScale
+
+#include <Eigen/Geometry> // cross
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +105,100 @@ liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const 
     if (robustSigmaAbout (points, candidate.members, patches[o].center, patches[o].normal) <= own)
       return true;
   return false;
+}
+
+std::size_t
+mergeBandLayers (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                 const std::vector<double>& band, std::vector<PlanarPatch>& patches,
+                 const std::vector<std::uint32_t>& labels)
+{
+  const std::size_t count = patches.size ();
+  if (count < 2)
+    return 0;
+  const auto larger = [&] (std::size_t b, std::size_t a) {
+    const std::size_t nb = patches[b].members.size (), na = patches[a].members.size ();
+    return nb > na || (nb == na && patches[b].first_index < patches[a].first_index);
+  };
+  // Per plane, the larger plane it is a layer of (kNoPatch: none); each plane reads only the labels
+  // and planes as they were, so the result does not depend on the thread count.
+  std::vector<std::uint32_t> into (count, kNoPatch);
+#pragma omp parallel num_threads(resolveThreads (params.num_threads))
+  {
+    std::vector<std::uint32_t> touching (count, 0), last (count, kNoPatch), seen;
+    std::vector<double> d;
+#pragma omp for schedule(dynamic, 1)
+    for (std::ptrdiff_t ai = 0; ai < static_cast<std::ptrdiff_t> (count); ++ai)
+    {
+      const auto a = static_cast<std::size_t> (ai);
+      const PlanarPatch& pa = patches[a];
+      if (pa.members.empty ())
+        continue;
+      // How many of A's members have a neighbour in each other plane (each member counted once).
+      seen.clear ();
+      for (const auto i : pa.members)
+        graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+          const std::uint32_t l = labels[j];
+          if (l == kNoPatch || l == a || last[l] == i)
+            return;
+          if (touching[l]++ == 0)
+            seen.push_back (l);
+          last[l] = i;
+        });
+      std::sort (seen.begin (), seen.end ());
+      double best_share = 0.0;
+      for (const auto b : seen)
+      {
+        const double share = static_cast<double> (touching[b]) / static_cast<double> (pa.members.size ());
+        touching[b] = 0;
+        last[b] = kNoPatch;
+        const PlanarPatch& pb = patches[b];
+        if (!(2.0 * share >= 1.0) || share <= best_share || !larger (b, a) || !normalsCompatible (pa, pb))
+          continue;
+        d.clear ();
+        double reach = 0.0;
+        for (const auto i : pa.members)
+        {
+          const Eigen::Vector3d p = points.points[i].cast<double> ();
+          d.push_back (std::abs ((p - pb.center).dot (pb.normal)));
+          const Eigen::Vector3d v = p - pa.center;
+          reach = std::max (reach, (v - v.dot (pb.normal) * pb.normal).norm ());
+        }
+        const double tilt = pa.normal.cross (pb.normal).norm () * reach;
+        if (medianInPlace (d) <= band[b] && tilt <= band[b])
+        {
+          into[a] = b;
+          best_share = share;
+        }
+      }
+    }
+  }
+  std::size_t merged = 0;
+  std::vector<char> grew (count, 0);
+  for (std::size_t a = 0; a < count; ++a)
+  {
+    const std::uint32_t b = into[a];
+    if (b == kNoPatch || into[b] != kNoPatch) // B is a layer itself: next pass
+      continue;
+    PlanarPatch& pb = patches[b];
+    pb.members.insert (pb.members.end (), patches[a].members.begin (), patches[a].members.end ());
+    patches[a].members.clear ();
+    grew[b] = 1;
+    ++merged;
+  }
+  for (std::size_t b = 0; b < count; ++b)
+    if (grew[b])
+    {
+      PlanarPatch& pb = patches[b];
+      std::sort (pb.members.begin (), pb.members.end ());
+      pb.first_index = pb.members.front ();
+      pb.grown = false;
+      PlaneEstimate e;
+      if (estimatePlane (points, pb.members, params, e))
+        pb.setEstimate (e);
+    }
+  patches.erase (std::remove_if (patches.begin (), patches.end (), [] (const PlanarPatch& p) { return p.members.empty (); }),
+                 patches.end ());
+  return merged;
 }
 
 } // namespace rspd

@@ -803,6 +803,20 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     st.bent_joined = joinSplitFaces (points, graph, params, patches, split);
   }
 
+  if (params.layer_merge && patches.size () >= 2)
+  {
+    // Layers of one plane's noise band (departure, see DetectorParameters::layer_merge); passes until
+    // none merges (each removes a plane), the bands measured again on the planes estimated again.
+    for (;;)
+    {
+      labels = labelSamples (points.size (), patches);
+      const std::size_t merged = mergeBandLayers (points, graph, params, noiseBands (points, params, patches), patches, labels);
+      st.layers_merged += merged;
+      if (merged == 0)
+        break;
+    }
+  }
+
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {
     labels = labelSamples (points.size (), patches); // the small-plane pass may have dropped patches

@@ -1,6 +1,7 @@
 /*
  * Tests of the band-layer test of the small-plane pass (isBandLayer) and of a released group lying
- * on a neighbouring plane (liesOnNeighbourPlane).
+ * on a neighbouring plane (liesOnNeighbourPlane), and of the merge of grown planes that are layers of
+ * one plane's band (mergeBandLayers).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
@@ -220,4 +221,141 @@ TEST (NeighbourPlane, NoPlaneBesideOrNoMembers)
   EXPECT_FALSE (liesOnNeighbourPlane (s.set, s.graph, s.planes, none, s.candidate));
   s.candidate.members.clear ();
   EXPECT_FALSE (liesOnNeighbourPlane (s.set, s.graph, s.planes, s.labels, s.candidate));
+}
+
+namespace
+{
+/** Two planes over a 1 x 1 m face (z = 0, 40 x 40 samples, noise 5 mm) for the layer merge: one holds
+  * the samples above z = 0, the other those below, each estimated on its own members (Eqs. 3-9), as
+  * two seeds of one noisy face grow into two layers of its band.
+  * Optionally a third plane C, 20 x 20 samples on 0.4 x 0.4 m at height \a c_lift over the face's
+  * middle, tilted by \a c_tilt about the y axis (C never joins a plane of the face). */
+struct LayerScene
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  NeighborGraph graph;
+};
+
+PlanarPatch
+estimatedPatch (const PointSet& set, std::vector<std::uint32_t> members)
+{
+  std::sort (members.begin (), members.end ());
+  PlaneEstimate e;
+  EXPECT_TRUE (estimatePlane (set, members, parameters (), e));
+  PlanarPatch p;
+  p.members = std::move (members);
+  p.first_index = p.members.front ();
+  p.setEstimate (e);
+  return p;
+}
+
+LayerScene
+makeLayers (bool with_c = false, double c_lift = 0.0, double c_tilt = 0.0)
+{
+  LayerScene s;
+  const std::vector<std::uint32_t> face = rspd_test::addRectangle (s.set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.005f, 7);
+  std::vector<std::uint32_t> a, b;
+  for (const auto i : face)
+    (s.set.points[i].z () > 0.0f ? a : b).push_back (i);
+  s.planes = {estimatedPatch (s.set, b), estimatedPatch (s.set, a)};
+  if (with_c)
+  {
+    const float c = static_cast<float> (std::cos (c_tilt)), sn = static_cast<float> (std::sin (c_tilt));
+    const std::vector<std::uint32_t> third = rspd_test::addRectangle (
+        s.set, {0.3f, 0.3f, static_cast<float> (c_lift)}, {0.4f * c, 0, 0.4f * sn}, {0, 0.4f, 0}, 20, 20, 0.002f, 8);
+    s.planes.push_back (estimatedPatch (s.set, third));
+  }
+  s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
+  return s;
+}
+
+std::vector<std::uint32_t>
+labelsOf (const LayerScene& s)
+{
+  std::vector<std::uint32_t> labels (s.set.points.size (), kNoPatch);
+  for (std::uint32_t p = 0; p < s.planes.size (); ++p)
+    for (const auto i : s.planes[p].members)
+      labels[i] = p;
+  return labels;
+}
+
+/** Each plane's noise band as the detector measures it: max(MDP, 3 robust σ of its members). */
+std::vector<double>
+bandsOf (const LayerScene& s)
+{
+  std::vector<double> band;
+  for (const auto& p : s.planes)
+  {
+    std::vector<double> d;
+    for (const auto i : p.members)
+      d.push_back (std::abs ((s.set.points[i].cast<double> () - p.center).dot (p.normal)));
+    std::nth_element (d.begin (), d.begin () + d.size () / 2, d.end ());
+    band.push_back (std::max (p.mdp, 3.0 * 1.4826 * d[d.size () / 2]));
+  }
+  return band;
+}
+} // namespace
+
+TEST (BandLayerMerge, TwoLayersOfOneNoisyFaceBecomeOnePlane)
+{
+  LayerScene s = makeLayers ();
+  // Each layer sits on its own side of the face, a noise σ or so from the other.
+  const double apart = std::abs ((s.planes[1].center - s.planes[0].center).dot (s.planes[0].normal));
+  EXPECT_GT (apart, 0.004);
+  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 1u);
+  ASSERT_EQ (s.planes.size (), 1u);
+  EXPECT_EQ (s.planes[0].members.size (), 1600u);
+  // Estimated again on both layers: back on the face.
+  EXPECT_LT (std::abs (s.planes[0].center.z ()), 0.0015);
+  EXPECT_GT (std::abs (s.planes[0].normal.z ()), std::cos (1.0 * kDegree));
+  // Nothing more to merge.
+  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
+}
+
+TEST (BandLayerMerge, PlaneOffTheBandOrTiltedOutOfItStays)
+{
+  // A plate 4 cm over the face's middle: among its samples, but far beyond its band.
+  {
+    LayerScene s = makeLayers (true, 0.04, 0.0);
+    const std::vector<double> band = bandsOf (s);
+    s.planes.erase (s.planes.begin () + 1); // the face as one plane, and the plate
+    std::vector<double> two = {band[0], band[2]};
+    EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), two, s.planes, labelsOf (s)), 0u);
+    EXPECT_EQ (s.planes.size (), 2u);
+  }
+  // A face crossing the plane at 4° through its middle, normals noisy enough for M2 (MND 10°):
+  // most of its samples lie within the band (the median does), its rims 2 cm off, beyond it.
+  {
+    LayerScene s = makeLayers (true, -0.2 * std::sin (4.0 * kDegree), 4.0 * kDegree);
+    s.planes.erase (s.planes.begin () + 1);
+    for (auto& p : s.planes)
+    {
+      p.mnd = 10.0 * kDegree;
+      p.cos_mnd = std::cos (p.mnd);
+    }
+    const std::vector<double> band = bandsOf (s);
+    std::vector<double> d;
+    for (const auto i : s.planes[1].members)
+      d.push_back (std::abs ((s.set.points[i].cast<double> () - s.planes[0].center).dot (s.planes[0].normal)));
+    std::nth_element (d.begin (), d.begin () + d.size () / 2, d.end ());
+    ASSERT_LT (d[d.size () / 2], band[0]); // the median test alone would merge it
+    EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), band, s.planes, labelsOf (s)), 0u);
+    EXPECT_EQ (s.planes.size (), 2u);
+  }
+}
+
+TEST (BandLayerMerge, PlaneBesideALargerOneStays)
+{
+  // Two coplanar halves of a face, each estimated on its own: they touch along one line only, so
+  // fewer than half of either's members border the other (M1-M4's business, not a layer's).
+  LayerScene s;
+  const std::vector<std::uint32_t> face = rspd_test::addRectangle (s.set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.005f, 7);
+  std::vector<std::uint32_t> left, right;
+  for (const auto i : face)
+    (s.set.points[i].x () < 0.45f ? left : right).push_back (i);
+  s.planes = {estimatedPatch (s.set, right), estimatedPatch (s.set, left)};
+  s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
+  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
+  EXPECT_EQ (s.planes.size (), 2u);
 }

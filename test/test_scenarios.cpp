@@ -602,6 +602,28 @@ TEST (Scenario, LoneNoisySeedOfARoughBoxSideSeedsItsPlane)
   EXPECT_GT (lone.stats.small_noisy_groups, grouped.stats.small_noisy_groups);
 }
 
+TEST (Scenario, LayersOfANoisyFaceAreMergedIntoOnePlane)
+{
+  // The room: two layers of the cabinet front's noise band (1,208 and 621 samples 4.6 mm apart) and a
+  // 213-sample layer below the floor were planes of their own, fragments of the truth's planes
+  // (measured: 2 fragments); merged, each face is one plane, and the door 2 cm proud of its wall
+  // stays a plane of its own.
+  const Detection merged = detectScene ("room");
+  const Detection apart = detectScene ("room", {}, true, pcl::rspd::NormalScale::Automatic,
+                                       [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                                         EXPECT_TRUE (s.getLayerMerge ());
+                                         s.setLayerMerge (false);
+                                         EXPECT_FALSE (s.getLayerMerge ());
+                                       });
+  EXPECT_GE (apart.score.fragments, 2);
+  EXPECT_EQ (apart.stats.layers_merged, 0u);
+  EXPECT_EQ (merged.score.fragments, 0);
+  EXPECT_GE (merged.stats.layers_merged, 2u);
+  EXPECT_EQ (merged.score.found, 12);
+  EXPECT_EQ (merged.score.false_planes, 0);
+  EXPECT_GE (merged.score.f1, 0.997);
+}
+
 TEST (Scenario, NoisyGroupsLeaveTheFacadesOutliersAndTheTanksAlone)
 {
   // Groups of turned-down seeds that are no rough face: a slab of the facade's outliers (MDP five

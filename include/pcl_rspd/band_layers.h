@@ -1,6 +1,6 @@
 /*
  * pcl_rspd: band layers — the tests that a seed (of the small-plane pass, or of released samples) is
- * part of a plane already found.
+ * part of a plane already found, and the merge of grown planes that are layers of one plane's band.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #pragma once
@@ -73,6 +73,36 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorP
 bool
 liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
                       const std::vector<std::uint32_t>& labels, const PlanarPatch& candidate);
+
+/** \brief One pass of the layer merge (DetectorParameters::layer_merge): each plane A that is a layer
+  * of a larger plane B's noise band joins B, and B is estimated again on both (estimatePlane).
+  *
+  * A layer of B: at least half of A's members have a graph neighbour held by B (A lies among B's
+  * samples, not beside them), M2 holds (normalsCompatible), the median distance of A's members to
+  * B's plane is within B's band, and A's tilt against B across its extent (sine of the angle times
+  * the farthest member's distance from A's centre in B's plane) is within B's band too.
+  *
+  * Why: two seeds of one noisy face grow at once, each takes the samples on its side of the face's
+  * noise band, and re-estimation (Sec. 3.5) centres each on its own side: two interleaved planes a
+  * noise σ or so apart, each with an MDP too narrow for M3 and M4 to join them (the room's cabinet
+  * front, σ 5 mm along the ray: 1,208 and 621 samples 4.6 mm apart, MDPs 5.3 and 3.8 mm; a σ = 6 mm
+  * box side at 300,000 points: 738 and 535 samples 8.1 mm apart). A plane beside B is not among its
+  * samples (a door 2 cm proud of its wall: more than half of its 739 samples border the wall, but
+  * they lie 2.0 cm off it, beyond its 1.4 cm band); a plane across a shallow edge tilts out of B's
+  * band (synpeb_pc01: a plane of two faces 22° from a plane whose band is 12 cm wide, tilted 14 cm
+  * across its 0.32 m). A plane that is a layer itself takes no layer in the same pass.
+  * \param[in] points samples (positions and normals)
+  * \param[in] graph their k-NN graph
+  * \param[in] params Eqs. 3-9's parameters for the estimate again; num_threads
+  * \param[in] band per plane, the distance within which its noise lies
+  * \param[in,out] patches the planes; layers merged are removed, order otherwise kept
+  * \param[in] labels per sample, the plane holding it (kNoPatch: none), as before the call
+  * \return planes merged into another
+  */
+std::size_t
+mergeBandLayers (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                 const std::vector<double>& band, std::vector<PlanarPatch>& patches,
+                 const std::vector<std::uint32_t>& labels);
 
 } // namespace rspd
 } // namespace pcl

@@ -121,6 +121,9 @@ struct RobustPlane
   *    planes meeting at an edge (more than 90° minus T1's angle apart, the robust spread down to 0.8
   *    of one plane's or less, each side passing T1-T3) is split there, and each part again; noisy
   *    normals give a wide MND, and growth carries a plane over an edge onto the next face;
+  *  - band layers (setLayerMerge(false) for the paper): then a plane lying among a larger plane's
+  *    samples (half of its members beside one of them) and within that plane's noise band across its
+  *    extent is merged into it: two seeds of one noisy face grow into two layers of its band;
   *  - edge sides (setEdgeSides(false) for the paper): after the last assignment, a sample next to
   *    another plane leaves its plane when its projection onto it lies beyond the line where the two
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
@@ -444,6 +447,17 @@ public:
   /** \brief Whether planes bent at an edge are split. */
   bool
   getBentPlaneSplit () const { return params_.bent_plane_split; }
+
+  /** \brief Band layers (default true; false = the paper): after the bent-plane split, a plane at
+    * least half of whose members border a larger plane, whose members lie (median) within that
+    * plane's noise band and which does not tilt out of it across its extent, is merged into it and
+    * the plane estimated again, until none is. See pcl::rspd::mergeBandLayers and
+    * pcl::rspd::DetectorParameters::layer_merge. */
+  void
+  setLayerMerge (bool enable);
+  /** \brief Whether layers of a plane's noise band are merged into it. */
+  bool
+  getLayerMerge () const { return params_.layer_merge; }
 
   /** \brief Edge sides (default true; false = the paper): where two planes meet, a sample of one
     * whose projection onto it lies beyond the line where they meet leaves it, for the other plane

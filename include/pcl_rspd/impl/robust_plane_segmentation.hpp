@@ -355,6 +355,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setConnectedParts (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setLayerMerge (bool enable)
+{
+  params_.layer_merge = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setBentPlaneSplit (bool enable)
 {
   params_.bent_plane_split = enable;
