@@ -18,6 +18,7 @@
 
 #include <fstream>
 #include <functional>
+#include <map>
 #include <limits>
 #include <random>
 #include <sys/stat.h>
@@ -622,6 +623,27 @@ TEST (Scenario, LayersOfANoisyFaceAreMergedIntoOnePlane)
   EXPECT_EQ (merged.score.found, 12);
   EXPECT_EQ (merged.score.false_planes, 0);
   EXPECT_GE (merged.score.f1, 0.997);
+}
+
+TEST (Scenario, NoPlaneEndsWithFewerThanEpsilonSamples)
+{
+  // The staircase at 15,000 points (seed 15, ε = 15) on PCL's k = 50 normals: a plane bent over a
+  // riser and a tread was cut at the edge, and the edge and step sides then moved all but one of its
+  // tread samples to the tread's other plane: a plane of one sample (measured). It is dropped.
+  pcl::rspd::SceneOptions o;
+  o.num_points = 15000;
+  o.seed = 15;
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
+  const Detection d = detectOnPclNormals (scene, pclNormals (scene.cloud));
+  std::map<std::uint32_t, std::size_t> size;
+  for (const auto l : d.labels)
+    if (l != 0)
+      ++size[l];
+  ASSERT_FALSE (size.empty ());
+  for (const auto& s : size)
+    EXPECT_GE (s.second, 15u) << "plane " << s.first;
+  EXPECT_GE (d.stats.below_epsilon, 1u);
+  EXPECT_EQ (d.score.found, 30);
 }
 
 TEST (Scenario, NoisyGroupsLeaveTheFacadesOutliersAndTheTanksAlone)

@@ -403,6 +403,7 @@ struct DetectorStatistics
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
   std::size_t unsupported = 0;       ///< samples released as beyond their plane's rim (support_check)
+  std::size_t below_epsilon = 0;     ///< planes the passes after growth left with fewer than ε samples, dropped
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check
   bool hit_iteration_cap = false;
   double prepare_seconds = 0.0;      ///< valid samples, centring, spatial order (wall time)
