@@ -674,9 +674,10 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       const PointSet& round_points = round == 0 ? points : refitted;
       std::size_t rim_seeds = 0;
       // Groups of thick cells on the PCA normals only: they seed once the pass's growth is stable.
+      const double thick_bound = std::max (max_mnd, max_retested_mnd);
       std::vector<PlanarPatch> seeds = splitPhase (round_points, small, &st, &left, params.rim_cell_retest, &rim_seeds,
                                                    params.small_cell_thick_join && round == 0 ? &joined_left : nullptr,
-                                                   std::max (max_mnd, max_retested_mnd));
+                                                   thick_bound);
       st.rim_seeds += rim_seeds;
       std::vector<PlanarPatch> too_noisy; // turned down alone; joined below (noisy_seed_groups)
       for (auto& seed : seeds)
@@ -723,6 +724,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         ++st.small_seeds;
         st.small_seeds_trimmed += round;
       }
+      double noisiest_seeded = 0.0; // MND of the noisiest plane a noisy seed seeded in this round
       for (auto& seed : joinNoisySeeds (round_points, graph, params, too_noisy, std::max (max_mnd, max_retested_mnd), max_mdp))
       {
         if (isBandLayer (round_points, graph, params, patches, band, labels, seed, nullptr))
@@ -730,10 +732,19 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         for (const auto i : seed.members)
           labels[i] = static_cast<std::uint32_t> (patches.size ());
         seed.retested = true; // noisier than every plane found: judged again once grown
+        noisiest_seeded = std::max (noisiest_seeded, seed.mnd);
         patches.push_back (std::move (seed));
         band.push_back (patches.back ().mdp);
         ++st.small_seeds;
         ++st.small_noisy_groups;
+      }
+      if (round == 0 && params.small_cell_thick_join && params.thick_cells_follow_noisy_seeds && noisiest_seeded > thick_bound)
+      {
+        // See DetectorParameters::thick_cells_follow_noisy_seeds: the same cells, kept as thick up to
+        // the MND of the noisiest plane seeded (the seeds' own statistics are not counted again).
+        joined_left.clear ();
+        splitPhase (round_points, small, nullptr, &left, params.rim_cell_retest, nullptr, &joined_left, noisiest_seeded);
+        ++st.thick_rebound;
       }
     }
   }

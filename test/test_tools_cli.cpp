@@ -218,7 +218,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_on.pcd", {"--bent-split", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bent_side_on.pcd", {"--bent-side-mnd", "on"}));
-  EXPECT_TRUE (room == labels ("r.pcd", "room_layers_on.pcd", {"--layer-merge", "on", "--noisy-lone=on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_layers_on.pcd", {"--layer-merge", "on", "--noisy-lone=on", "--thick-follow", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bounded_on.pcd", {"--bounded-reestimate", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_support_on.pcd", {"--support", "on"}));

@@ -129,6 +129,18 @@ struct DetectorParameters
     * three of 67-177 that did not agree (the thin one's band held too few of the others' samples).
     * false = a seed too noisy alone seeds only in a group of ε samples. */
   bool noisy_lone_seeds = true;
+  /** \brief Departure (part of small_cell_thick_join): where noisy seeds (groups or lone) seeded planes
+    * noisier than the thick cells' bound of the pass (the noisiest plane found before it), the
+    * pass's thick cells are collected again up to the MND of the noisiest plane so seeded: a face as
+    * rough as those, none of whose cells passed T1, is then seeded by their group as the thick cells
+    * of a face no noisier than the planes found are. The boxes with 15 % outliers on PCL's k = 50
+    * normals: the σ = 3 cm box's top, cells of 0.21 and 0.43 m with MNDs of 13-21° against a bound of
+    * 10.3°, while the noisy seeds of its sides and front seeded planes of up to 19.2° (debug prints);
+    * 31 → 32 of 32. Raising the
+    * bound by a fixed ratio (twice) instead found it too but lost a face of the boxes at 30,000
+    * points, where the bound is already 45° and twice that keeps cells across edges. false = the
+    * thick cells keep the bound of the planes found before the pass. */
+  bool thick_cells_follow_noisy_seeds = true;
   /** \brief Departure (trimmed normals for what growth left, part of the small-cell pass): after
     * the pass's split on the PCA normals, the samples still left get the normal of their
     * k-neighbourhood's reweighted least-trimmed-squares plane (refineNormalsTrimmed) in a copy, and
@@ -403,6 +415,7 @@ struct DetectorStatistics
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
   std::size_t unsupported = 0;       ///< samples released as beyond their plane's rim (support_check)
+  std::size_t thick_rebound = 0;     ///< small-plane passes whose thick cells were collected again (thick_cells_follow_noisy_seeds)
   std::size_t below_epsilon = 0;     ///< planes the passes after growth left with fewer than ε samples, dropped
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check
   bool hit_iteration_cap = false;

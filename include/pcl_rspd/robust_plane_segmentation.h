@@ -627,6 +627,15 @@ public:
   /** \brief Whether a lone noisy small seed may seed a plane. */
   bool
   getNoisyLoneSeeds () const { return params_.noisy_lone_seeds; }
+  /** \brief Thick cells that follow the noisy seeds (default true; false = the bound of the planes
+    * found before the pass): where noisy small seeds seeded planes noisier than the small-plane
+    * pass's thick cells may be, its thick cells are collected again up to the noisiest such plane's
+    * MND. See pcl::rspd::DetectorParameters::thick_cells_follow_noisy_seeds. */
+  void
+  setThickCellsFollowNoisySeeds (bool enable);
+  /** \brief Whether the small-plane pass's thick cells follow the noisy seeds' planes. */
+  bool
+  getThickCellsFollowNoisySeeds () const { return params_.thick_cells_follow_noisy_seeds; }
   /** \brief How many times as noisy (MND) and thick (MDP) as the noisiest and thickest plane found
     * a group of noisy small seeds may be, at least 1 (default 2). See
     * pcl::rspd::DetectorParameters::noisy_group_ratio. */

@@ -493,6 +493,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setNoisySeedGroups (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setThickCellsFollowNoisySeeds (bool enable)
+{
+  params_.thick_cells_follow_noisy_seeds = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setNoisyLoneSeeds (bool enable)
 {
   params_.noisy_lone_seeds = enable;
