@@ -286,6 +286,17 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   }
 }
 
+/** Drop the planes holding fewer than ε samples (Sec. 3.1 keeps none). \return planes dropped */
+std::size_t
+dropBelowEpsilon (const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+{
+  const std::size_t before = patches.size ();
+  patches.erase (std::remove_if (patches.begin (), patches.end (),
+                                 [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
+                 patches.end ());
+  return before - patches.size ();
+}
+
 /** Whether the normals of a grown plane its positions call bent (curvature \a c) do not turn with it
   * (DetectorParameters::judge_normal_turn): a flat face whose quadric bends by chance. */
 bool
@@ -752,9 +763,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   {
     growMergeUntilStable (points, graph, params, patches, labels, flags, st, trimmed_seeds ? &refitted : nullptr);
     refitted = PointSet (); // read by that grow-merge alone
-    patches.erase (std::remove_if (patches.begin (), patches.end (),
-                                   [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
-                   patches.end ());
+    dropBelowEpsilon (params, patches);
   }
   if (st.retested_seeds > 0 || st.joined_seeds > 0 || st.small_noisy_groups > 0)
   {
@@ -879,11 +888,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   // between planes: the staircase at 15,000 points (seed 15) on PCL's k = 50 normals kept a plane of
   // one sample, what the edge and step sides left of a tread's second plane, cut from a plane bent
   // over the riser below. What is left of such a plane is no plane.
-  const std::size_t before_floor = patches.size ();
-  patches.erase (std::remove_if (patches.begin (), patches.end (),
-                                 [&] (const PlanarPatch& p) { return p.members.size () < params.min_patch_size; }),
-                 patches.end ());
-  st.below_epsilon = before_floor - patches.size ();
+  st.below_epsilon = dropBelowEpsilon (params, patches);
 
   st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();
 

@@ -50,16 +50,19 @@ joinNoisySeeds (const PointSet& points, const NeighborGraph& graph, const Detect
   }
   const std::vector<std::vector<std::uint32_t>> groups = sets.groups ();
   const double ratio = params.noisy_group_ratio;
+  // What a group (or a lone seed) must be as a whole, beyond T1-T3.
+  const auto seeds_plane = [&] (const PlanarPatch& seed) {
+    return seed.mnd <= ratio * max_mnd && seed.mdp <= ratio * max_mdp && !bentAtAnEdge (points, seed.members, params) &&
+           isFlatPatch (points, params, seed, false);
+  };
   for (const auto& group : groups)
   {
     if (group.size () < 2)
     {
       // A lone seed passed T1-T3 at the pass's cell size: no union to test again, and no ε yet (it
       // must hold ε samples once grown, as every plane).
-      const PlanarPatch& seed = seeds[group.front ()];
-      if (params.noisy_lone_seeds && seed.mnd <= ratio * max_mnd && seed.mdp <= ratio * max_mdp &&
-          !bentAtAnEdge (points, seed.members, params) && isFlatPatch (points, params, seed, false))
-        out.push_back (seed);
+      if (params.noisy_lone_seeds && seeds_plane (seeds[group.front ()]))
+        out.push_back (seeds[group.front ()]);
       continue;
     }
     std::vector<std::uint32_t> samples;
@@ -69,14 +72,13 @@ joinNoisySeeds (const PointSet& points, const NeighborGraph& graph, const Detect
       continue;
     std::sort (samples.begin (), samples.end ());
     PlanarityResult r = robustPlanarityTest (points, samples, params);
-    if (r.verdict != PlanarityVerdict::Planar || !(r.estimate.mnd () <= ratio * max_mnd) ||
-        !(r.estimate.mdp () <= ratio * max_mdp) || bentAtAnEdge (points, r.inliers, params))
+    if (r.verdict != PlanarityVerdict::Planar)
       continue;
     PlanarPatch seed;
     seed.members = std::move (r.inliers);
     seed.first_index = seed.members.front ();
     seed.setEstimate (r.estimate);
-    if (isFlatPatch (points, params, seed, false))
+    if (seeds_plane (seed))
       out.push_back (std::move (seed));
   }
   return out;
