@@ -30,7 +30,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -62,8 +62,9 @@ const char* const kHelp =
     "                   second time, on the normals of their neighbourhoods' trimmed planes:\n"
     "                   'auto' (the default) with the input's normals only, 'trimmed' with\n"
     "                   normals estimated here by PCA too, 'pca' never (the paper)\n"
-    "  --rim-retest on|off  in the small-plane pass, a cell failing only T3 is tested again on\n"
-    "                   its inliers and may seed a plane (default on; off = it seeds nothing)\n"
+    "  --rim-retest on|once|off  in the small-plane pass, a cell failing only T3 is tested\n"
+    "                   again on its inliers, and theirs while T3 still fails, and may seed a\n"
+    "                   plane (default on; once = one retest; off = it seeds nothing)\n"
     "  --release on|off once growth is stable, members farther than 3 robust sigma from their\n"
     "                   plane are offered to the neighbouring planes (default on; off = the paper:\n"
     "                   members are never revoked)\n"
@@ -162,6 +163,7 @@ struct Options
   bool given_normal_check = true;
   bool coplanar_merge = true;
   bool rim_retest = true;
+  bool rim_retest_until_stable = true;
   bool release = true;
   bool released_planes = true;
   bool edge_sides = true;
@@ -267,7 +269,13 @@ parseArguments (int argc, char** argv)
     else if (arg == "--coplanar-merge")
       o.coplanar_merge = option.choice ("on", "off");
     else if (arg == "--rim-retest")
-      o.rim_retest = option.choice ("on", "off");
+    {
+      const std::string v = value ();
+      if (v != "on" && v != "once" && v != "off")
+        throw UsageError{"--rim-retest needs 'on', 'once' or 'off' (got '" + v + "')"};
+      o.rim_retest = v != "off";
+      o.rim_retest_until_stable = v == "on";
+    }
     else if (arg == "--release")
       o.release = option.choice ("on", "off");
     else if (arg == "--released-planes")
@@ -467,6 +475,7 @@ run (const Options& o)
   seg.setGivenNormalCheck (o.given_normal_check);
   seg.setCoplanarMerge (o.coplanar_merge);
   seg.setRimCellRetest (o.rim_retest);
+  seg.setRimRetestUntilStable (o.rim_retest_until_stable);
   seg.setFarMemberRelease (o.release);
   seg.setReleasedPlaneSeeding (o.released_planes);
   seg.setEdgeSides (o.edge_sides);

@@ -110,12 +110,20 @@ public:
     if (r.verdict == PlanarityVerdict::TooManyOutliers && retest_rim_cells_)
     {
       // The inliers of the cell's own estimate (the test drops them when it fails), tested again.
-      const std::vector<std::uint32_t> inliers = intervalInliers (points_, samples, r.estimate);
-      if (inliers.size () >= params_.min_patch_size)
+      // Until stable (DetectorParameters::rim_retest_until_stable): each estimate on cleaner
+      // inliers is tighter, so the rim's bent normals fall out a step at a time.
+      std::vector<std::uint32_t> inliers = intervalInliers (points_, samples, r.estimate);
+      while (inliers.size () >= params_.min_patch_size)
       {
         r = robustPlanarityTest (points_, inliers, params_);
         if (r.verdict == PlanarityVerdict::Planar)
           rim_seeds_.fetch_add (1, std::memory_order_relaxed);
+        if (r.verdict != PlanarityVerdict::TooManyOutliers || !params_.rim_retest_until_stable)
+          break;
+        std::vector<std::uint32_t> next = intervalInliers (points_, inliers, r.estimate);
+        if (next.size () == inliers.size ())
+          break;
+        inliers.swap (next);
       }
     }
     bool thick = keep_thick_cells_ && r.verdict == PlanarityVerdict::FailedDistance &&

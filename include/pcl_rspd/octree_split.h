@@ -33,7 +33,8 @@ namespace rspd
   *            bounding cube); otherwise over all samples
   * \param[in] retest_rim_cells a cell that passes T1 and T2 but fails T3 is tested again on its own
   *            inliers, which seed a patch if they pass (DetectorParameters::rim_cell_retest; the
-  *            small-cell pass only, false = the paper)
+  *            small-cell pass only, false = the paper), and their own inliers while T3 still fails
+  *            (DetectorParameters::rim_retest_until_stable)
   * \param[out] rim_seeds patches found that way are counted here (may be null)
   * \param[out] joined_out with params.join_thick_cells: the groups
   *            of thick cells that pass T1-T3 and are not bentAtAnEdge (bent_planes.h) go here (null: they are appended to the

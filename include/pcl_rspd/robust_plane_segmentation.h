@@ -387,6 +387,15 @@ public:
   bool
   getRimCellRetest () const { return params_.rim_cell_retest; }
 
+  /** \brief Rim cells retested until stable (default true; false = one retest): where a rim cell's
+    * inliers still fail T3, their own inliers are tested again, until the test passes, fewer than ε
+    * are left or they no longer change. See pcl::rspd::DetectorParameters::rim_retest_until_stable. */
+  void
+  setRimRetestUntilStable (bool enable);
+  /** \brief Whether rim cells are retested until stable. */
+  bool
+  getRimRetestUntilStable () const { return params_.rim_retest_until_stable; }
+
   /** \brief Far members (default true; false = the paper, members are never revoked): once
     * grow-merge is stable, members farther from their plane's last estimate than its noise band
     * (max(MDP, 3 robust σ)) are released, a neighbouring plane whose inlier test they pass takes

@@ -320,6 +320,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setRimCellRetest (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setRimRetestUntilStable (bool enable)
+{
+  params_.rim_retest_until_stable = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setFarMemberRelease (bool enable)
 {
   params_.release_far_members = enable;
