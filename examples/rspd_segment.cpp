@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -124,6 +124,9 @@ const char* const kHelp =
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends by half their MND, and their normals\n"
     "                   turn smoothly, not in steps as over a fold (default on; off = the paper)\n"
+    "  --hinge-normals on|off  a seed or group of cells is bent at an edge (and seeds nothing)\n"
+    "                   only if its two sides' normals turn by more than 15 degrees as their\n"
+    "                   planes do (default on; off = positions alone)\n"
     "  --bend-test noise|share  a noisy seed or plane is flat unless a quadric explains more of\n"
     "                   its residual than it explains of a flat plane's noise with as many points,\n"
     "                   and a grown one is thinner than half its narrow side ('noise', the default)\n"
@@ -164,6 +167,7 @@ struct Options
   bool coplanar_merge = true;
   bool rim_retest = true;
   bool rim_retest_until_stable = true;
+  bool hinge_normals = true;
   bool release = true;
   bool released_planes = true;
   bool edge_sides = true;
@@ -334,6 +338,8 @@ parseArguments (int argc, char** argv)
     }
     else if (arg == "--curved-check")
       o.curved_check = option.choice ("on", "off");
+    else if (arg == "--hinge-normals")
+      o.hinge_normals = option.choice ("on", "off");
     else if (arg == "--bend-test")
       o.bend_noise_test = option.choice ("noise", "share");
     else if (arg == "--assign")
@@ -476,6 +482,7 @@ run (const Options& o)
   seg.setCoplanarMerge (o.coplanar_merge);
   seg.setRimCellRetest (o.rim_retest);
   seg.setRimRetestUntilStable (o.rim_retest_until_stable);
+  seg.setHingeNormalTurn (o.hinge_normals);
   seg.setFarMemberRelease (o.release);
   seg.setReleasedPlaneSeeding (o.released_planes);
   seg.setEdgeSides (o.edge_sides);

@@ -190,6 +190,8 @@ fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, Hin
   appendDistances (points, samples, origin, d, whole_normal);
   fit.single_sigma = kMadScale * medianInPlace (d);
   fit.angle = std::acos (std::min (1.0, std::abs (side_normal[0].dot (side_normal[1]))));
+  fit.side_normal[0] = side_normal[0];
+  fit.side_normal[1] = side_normal[1];
   return true;
 }
 
@@ -203,7 +205,27 @@ bool
 bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params)
 {
   HingeFit fit;
-  return fitHinge (points, samples, fit) && isBend (fit, params);
+  if (!fitHinge (points, samples, fit) || !isBend (fit, params))
+    return false;
+  if (!params.hinge_normal_turn)
+    return true;
+  // The normals must turn at the edge as the positions do (DetectorParameters::hinge_normal_turn):
+  // each side's mean normal, every sample's turned towards its side's plane normal (unoriented).
+  Eigen::Vector3d mean[2];
+  for (int s = 0; s < 2; ++s)
+  {
+    mean[s].setZero ();
+    for (const auto i : fit.parts[s])
+    {
+      const Eigen::Vector3d n = points.normals[i].cast<double> ();
+      mean[s] += n.dot (fit.side_normal[s]) < 0.0 ? -n : n;
+    }
+    if (!(mean[s].norm () > 0.0))
+      return true; // no direction to compare: positions decide
+    mean[s].normalize ();
+  }
+  const double turn = std::acos (std::min (1.0, std::abs (mean[0].dot (mean[1]))));
+  return turn > 0.5 * M_PI - params.min_distance_angle;
 }
 
 namespace

@@ -117,6 +117,36 @@ TEST (BentPlanes, HingeFindsTheEdgeOfARoof)
   }
 }
 
+TEST (BentPlanes, AHingeNeedsTheNormalsToTurnToo)
+{
+  // A roof whose faces' normals turn with them is bent at an edge; the same positions with normals
+  // that do not turn (a flat noisy face whose cut sides tilt by chance) are not, unless positions
+  // alone decide (DetectorParameters::hinge_normal_turn off).
+  Roof r = makeRoof (40.0f * kDegree, 0.005f);
+  std::vector<std::uint32_t> all (r.set.size ());
+  std::iota (all.begin (), all.end (), 0u);
+  DetectorParameters p = parameters ();
+  EXPECT_TRUE (p.hinge_normal_turn);
+  EXPECT_TRUE (bentAtAnEdge (r.set, all, p));
+  // Normals turned by 10° only (under T1's 15°), with signs mixed as PCA leaves them.
+  for (std::uint32_t i = 0; i < r.set.size (); ++i)
+  {
+    const float t = (r.set.points[i].x () > 0 ? 5.0f : -5.0f) * kDegree;
+    r.set.normals[i] = Eigen::Vector3f (std::sin (t), 0.0f, std::cos (t)) * (i % 3 == 0 ? -1.0f : 1.0f);
+  }
+  EXPECT_FALSE (bentAtAnEdge (r.set, all, p));
+  p.hinge_normal_turn = false;
+  EXPECT_TRUE (bentAtAnEdge (r.set, all, p));
+  // Turned by 30°: a hinge again.
+  p.hinge_normal_turn = true;
+  for (std::uint32_t i = 0; i < r.set.size (); ++i)
+  {
+    const float t = (r.set.points[i].x () > 0 ? 15.0f : -15.0f) * kDegree;
+    r.set.normals[i] = Eigen::Vector3f (std::sin (t), 0.0f, std::cos (t));
+  }
+  EXPECT_TRUE (bentAtAnEdge (r.set, all, p));
+}
+
 TEST (BentPlanes, RoofHeldByOnePlaneIsSplitIntoItsFaces)
 {
   const Roof r = makeRoof (30.0f * kDegree, 0.01f);

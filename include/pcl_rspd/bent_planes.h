@@ -24,6 +24,7 @@ struct HingeFit
   double single_sigma = 0.0;           ///< robust σ (1.4826 median |d|) about the set's least-squares plane
   double split_sigma = 0.0;            ///< robust σ about each side's own least-squares plane
   double angle = 0.0;                  ///< angle between the two sides' planes (radians, in [0, π/2])
+  Eigen::Vector3d side_normal[2];      ///< each side's least-squares plane normal
 };
 
 /** \brief The straight cut across a set of samples whose two sides are best explained by two planes.
@@ -47,9 +48,10 @@ fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, Hin
 bool
 isBend (const HingeFit& fit, const DetectorParameters& params);
 
-/** \brief Whether two planes meeting at an edge explain \a samples (fitHinge, then isBend). A group
-  * of thick cells along a noisy cube's edge (half on either face, each half's normals bent towards
-  * the other) passes T1-T3 as a long strip; a riser as narrow is flat. */
+/** \brief Whether two planes meeting at an edge explain \a samples (fitHinge, then isBend), and, with
+  * DetectorParameters::hinge_normal_turn, whether the two sides' mean normals turn by more than 90°
+  * minus T1's angle too. A group of thick cells along a noisy cube's edge (half on either face, each
+  * half's normals bent towards the other) passes T1-T3 as a long strip; a riser as narrow is flat. */
 bool
 bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples, const DetectorParameters& params);
 

@@ -307,6 +307,15 @@ struct DetectorParameters
   /** \brief Bent planes: the largest ratio of the two planes' robust σ to the one plane's that counts as
     * a bend (0.8; fitHinge's search on flat noisy planes stays above 0.85). */
   double bent_sigma_ratio = 0.8;
+  /** \brief Departure (part of bentAtAnEdge, which judges seeds and groups of cells): a set the
+    * positions call bent at an edge (isBend) is so only if the mean normals of its two sides also
+    * turn by more than 90° minus T1's angle (15°), the bend isBend asks of the positions. A cut
+    * through few noisy samples can leave a side whose least-squares plane tilts by chance: a seed of
+    * 76 samples on a box side at σ 3 cm (PCL's k = 50 normals), cut 60 / 16, gave sides 47° apart
+    * whose normals turned 3.9°, and the side was never seeded; real edges in the seeds of the
+    * scenes, of synpeb_pc01 and of room_scan1 turned their normals by 20-87°, flat faces cut by
+    * chance by 2-14°. false = positions alone. */
+  bool hinge_normal_turn = true;
   /** \brief Departure (residual pattern, the paper's Sec. 5 suggestion): once grow-merge is stable,
     * a quadric w = f(u, v) is fitted to each plane's samples over its least-squares plane
     * (measureCurvature), and the plane is dropped as a facet of a curved surface (pipe, tank, pillar,

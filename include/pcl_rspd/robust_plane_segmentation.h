@@ -396,6 +396,16 @@ public:
   bool
   getRimRetestUntilStable () const { return params_.rim_retest_until_stable; }
 
+  /** \brief Normals turn at a hinge (default true; false = positions alone): a seed or a group of
+    * cells is bent at an edge, and seeds nothing, only if its two sides' mean normals turn by more
+    * than 90° minus T1's angle as their planes do. See
+    * pcl::rspd::DetectorParameters::hinge_normal_turn. */
+  void
+  setHingeNormalTurn (bool enable);
+  /** \brief Whether a hinge needs the normals to turn too. */
+  bool
+  getHingeNormalTurn () const { return params_.hinge_normal_turn; }
+
   /** \brief Far members (default true; false = the paper, members are never revoked): once
     * grow-merge is stable, members farther from their plane's last estimate than its noise band
     * (max(MDP, 3 robust σ)) are released, a neighbouring plane whose inlier test they pass takes

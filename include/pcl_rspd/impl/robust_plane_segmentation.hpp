@@ -327,6 +327,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setRimRetestUntilStable (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setHingeNormalTurn (bool enable)
+{
+  params_.hinge_normal_turn = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setFarMemberRelease (bool enable)
 {
   params_.release_far_members = enable;
