@@ -180,18 +180,15 @@ fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, Hin
     fit.parts[(points.points[i].cast<double> () - origin).dot (best_dir) >= best_cut ? 1 : 0].push_back (i);
   std::vector<float> d;
   d.reserve (n);
-  Eigen::Vector3d side_normal[2];
   for (int s = 0; s < 2; ++s)
-    if (!appendDistances (points, fit.parts[s], origin, d, side_normal[s]))
+    if (!appendDistances (points, fit.parts[s], origin, d, fit.side_normal[s]))
       return false;
   fit.split_sigma = kMadScale * medianInPlace (d);
   d.clear ();
   Eigen::Vector3d whole_normal;
   appendDistances (points, samples, origin, d, whole_normal);
   fit.single_sigma = kMadScale * medianInPlace (d);
-  fit.angle = std::acos (std::min (1.0, std::abs (side_normal[0].dot (side_normal[1]))));
-  fit.side_normal[0] = side_normal[0];
-  fit.side_normal[1] = side_normal[1];
+  fit.angle = std::acos (std::min (1.0, std::abs (fit.side_normal[0].dot (fit.side_normal[1]))));
   return true;
 }
 
