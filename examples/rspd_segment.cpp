@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -124,6 +124,9 @@ const char* const kHelp =
     "  --curved-check on|off  drop planes that are facets of a curved surface: a quadric explains\n"
     "                   a quarter of their residual and bends by half their MND, and their normals\n"
     "                   turn smoothly, not in steps as over a fold (default on; off = the paper)\n"
+    "  --curved-turn on|off  the check also calls a plane curved when its quadric bends beyond\n"
+    "                   chance and its normals turn across it by half their MND, where noise\n"
+    "                   hides the bend from the bounds above (default on; off = those alone)\n"
     "  --hinge-normals on|off  a seed or group of cells is bent at an edge (and seeds nothing)\n"
     "                   only if its two sides' normals turn by more than 15 degrees as their\n"
     "                   planes do (default on; off = positions alone)\n"
@@ -184,6 +187,7 @@ struct Options
   bool layer_merge = true;
   bool bent_side_mnd = true;
   bool curved_check = true;
+  bool curved_turn = true;
   bool bend_noise_test = true;
   bool drop_outlier_seeds = true;
   bool retest_outlier_seeds = true;
@@ -338,6 +342,8 @@ parseArguments (int argc, char** argv)
     }
     else if (arg == "--curved-check")
       o.curved_check = option.choice ("on", "off");
+    else if (arg == "--curved-turn")
+      o.curved_turn = option.choice ("on", "off");
     else if (arg == "--hinge-normals")
       o.hinge_normals = option.choice ("on", "off");
     else if (arg == "--bend-test")
@@ -500,6 +506,7 @@ run (const Options& o)
   seg.setLayerMerge (o.layer_merge);
   seg.setBentSideParentMnd (o.bent_side_mnd);
   seg.setCurvedPlaneCheck (o.curved_check);
+  seg.setCurvedNormalTurn (o.curved_turn);
   seg.setBendNoiseTest (o.bend_noise_test);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setOutlierSeedRetest (o.retest_outlier_seeds);

@@ -130,6 +130,13 @@ isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& pa
          c.share <= 0.999 && c.half_bend >= 0.5 * mnd;
 }
 
+bool
+isCurvedByNormals (const PlaneCurvature& c, double turn_across, double mnd, const DetectorParameters& params)
+{
+  return c.samples > 0 && c.share >= chanceBendShare (c.samples, params.curved_turn_confidence) && c.share <= 0.999 &&
+         std::isfinite (turn_across) && turn_across >= 0.5 * mnd;
+}
+
 namespace
 {
 /** Each member's (position along the curved direction, signed angle of its normal towards it), both

@@ -361,8 +361,10 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
   for (std::ptrdiff_t p = 0; p < count; ++p)
   {
     const PlaneCurvature c = measureCurvature (points, patches[p].members);
-    curved[p] = isCurvedPatch (c, patches[p].mnd, params) &&
-                normalTurnRatio (points, patches[p].members, c) < params.curved_fold_ratio;
+    const bool bent = isCurvedPatch (c, patches[p].mnd, params) ||
+                      (params.curved_normal_turn &&
+                       isCurvedByNormals (c, normalTurnAcross (points, patches[p].members, c), patches[p].mnd, params));
+    curved[p] = bent && normalTurnRatio (points, patches[p].members, c) < params.curved_fold_ratio;
   }
   std::size_t dropped = 0;
   std::size_t kept = 0;

@@ -352,3 +352,57 @@ TEST (NormalTurnAcross, AnArcsNormalsTurnWithItAFlatFacesDoNot)
   const auto s = addCylinderArc (few, 1.0, 0.3, 11, 0.001f);
   EXPECT_EQ (normalTurnAcross (few, s, measureCurvature (few, s)), HUGE_VAL);
 }
+
+TEST (CurvedByNormals, ANoisyArcWhoseNormalsTurnByHalfItsMndIsCurvedAFlatFaceIsNot)
+{
+  // A pillar's facet under noise a large part of its bend (radius 0.3 m, 0.29 m across, σ 2 cm):
+  // the quadric explains less than a quarter of the residual, yet more than chance, and MND is the
+  // noise's, so isCurvedPatch's fixed bounds keep it; its normals turn by 1 rad across it.
+  DetectorParameters params;
+  int judged = 0;
+  for (std::uint32_t seed = 1; seed <= 40 && judged < 5; ++seed)
+  {
+    PointSet s;
+    const auto m = addCylinderArc (s, 0.3, 0.5, 1000, 0.02f, seed, 2.5);
+    const PlaneCurvature c = measureCurvature (s, m);
+    if (!(c.share < params.min_curvature_share && c.share > chanceBendShare (c.samples, params.curved_turn_confidence)))
+      continue;
+    ++judged;
+    const double mnd = 0.8; // noisy normals: a spread wider than the turn
+    const double turn = normalTurnAcross (s, m, c);
+    EXPECT_NEAR (turn, 1.0, 0.1);
+    EXPECT_FALSE (isCurvedPatch (c, mnd, params)) << "share " << c.share;
+    EXPECT_TRUE (isCurvedByNormals (c, turn, mnd, params)) << "share " << c.share;
+    // Normals that turn by less than half MND show nothing beyond the quadric.
+    EXPECT_FALSE (isCurvedByNormals (c, turn, 2.0 * turn + 0.01, params));
+  }
+  EXPECT_EQ (judged, 5) << "too few draws with a share between chance (99.9 %) and a quarter";
+  // A flat face: its quadric bends by chance at most, its normals do not turn.
+  std::mt19937 rng (3);
+  int flat_judged = 0;
+  for (int draw = 0; draw < 40; ++draw)
+  {
+    PointSet flat;
+    const auto f = addNoisyRectangle (flat, 2.5, 0.3, 1000, 0.02f, rng);
+    const PlaneCurvature cf = measureCurvature (flat, f);
+    if (cf.samples == 0)
+      continue;
+    ++flat_judged;
+    EXPECT_FALSE (isCurvedByNormals (cf, normalTurnAcross (flat, f, cf), 0.05, params));
+  }
+  EXPECT_EQ (flat_judged, 40);
+  // A sparse face's normals turn across it by its rims (the boxes at 10,000 points on PCL's k = 50
+  // normals: 1.2-2.1 rad, MND 0.7-1.7) and one face in twenty bends beyond chance at 95 %: the
+  // normals' path asks for a share beyond chance at 99.9 %.
+  PlaneCurvature sparse;
+  sparse.samples = 100;
+  sparse.share = 0.5 * (chanceBendShare (100, 0.95) + chanceBendShare (100, params.curved_turn_confidence));
+  EXPECT_FALSE (isCurvedByNormals (sparse, 2.0, 1.0, params));
+  sparse.share = 1.05 * chanceBendShare (100, params.curved_turn_confidence);
+  EXPECT_TRUE (isCurvedByNormals (sparse, 2.0, 1.0, params));
+  // Not measured: never curved.
+  EXPECT_FALSE (isCurvedByNormals (PlaneCurvature (), 1.0, 0.1, params));
+  PointSet arc;
+  const auto a = addCylinderArc (arc, 0.3, 0.5, 1000, 0.02f, 1, 2.5);
+  EXPECT_FALSE (isCurvedByNormals (measureCurvature (arc, a), HUGE_VAL, 0.1, params));
+}

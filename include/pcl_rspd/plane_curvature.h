@@ -80,6 +80,13 @@ isTube (const PlaneCurvature& c, double mdp);
 bool
 isCurvedPatch (const PlaneCurvature& c, double mnd, const DetectorParameters& params);
 
+/** \brief Whether the normals show a plane to be a facet of a curved surface where noise hides the
+  * bend from isCurvedPatch's fixed bounds (DetectorParameters::curved_normal_turn): the quadric
+  * bends beyond chance and the normals turn across the plane (\a turn_across, normalTurnAcross) by
+  * at least half its MND. The caller still asks that they turn smoothly (normalTurnRatio). */
+bool
+isCurvedByNormals (const PlaneCurvature& c, double turn_across, double mnd, const DetectorParameters& params);
+
 /** \brief How smoothly the sample normals turn across a plane: the residual of their angle, measured
   * along the quadric's most curved direction (PlaneCurvature::along), about a straight line in the
   * position along it, over its residual about the best single step (two levels, each side at least a

@@ -156,7 +156,9 @@ struct RobustPlane
   *    of the dominant normal directions (pcl::rspd::dominantFrame), so a rotated cloud gives the
   *    same planes, and the cells of a scene not aligned with its axes hold one wall, not a slice of two;
   *  - a curved-surface check (setCurvedPlaneCheck, on by default) drops planes whose samples bend
-  *    and whose normals turn smoothly: facets of pipes, tanks, pillars and balls.
+  *    and whose normals turn smoothly: facets of pipes, tanks, pillars and balls; where noise hides
+  *    the bend from the quadric's fixed bounds, a bend beyond chance and normals turning across the
+  *    plane by half its MND suffice (setCurvedNormalTurn).
   *
   * Without setInputNormals, normals are estimated by PCA over the same k-neighbourhoods that form
   * the growth graph. Where noise along the normal is as large as such a neighbourhood (a million
@@ -586,6 +588,17 @@ public:
   /** \brief The curved-surface check's fold ratio. */
   double
   getCurvedFoldRatio () const { return params_.curved_fold_ratio; }
+
+  /** \brief The curved-surface check also reads the normals' own turn (default true; false = the
+    * quadric's fixed bounds alone): a plane whose quadric bends beyond chance and whose normals turn
+    * across it by at least half its MND, smoothly, is a curved facet even where noise keeps the
+    * quadric's share below a quarter or its turn below half MND. See
+    * pcl::rspd::DetectorParameters::curved_normal_turn. */
+  void
+  setCurvedNormalTurn (bool enable);
+  /** \brief Whether the curved-surface check reads the normals' own turn. */
+  bool
+  getCurvedNormalTurn () const { return params_.curved_normal_turn; }
 
   /** \brief Small seeds' MND floor (default true; false = a seed's own MND): a seed of the
     * small-plane pass gets at least the MND of the tightest plane grown, since the normals of its few

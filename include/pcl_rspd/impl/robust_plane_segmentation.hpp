@@ -460,6 +460,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setCurvedNormalTurn (bool enable)
+{
+  params_.curved_normal_turn = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedFoldRatio (double ratio)
 {
   if (!(ratio > 0.0)) // NaN too
