@@ -9,6 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
 using rspd_test::runTool;
 
 namespace
@@ -101,6 +107,36 @@ TEST (EvaluateCli, TruthAgainstItselfScoresOneAndJsonHasTheKeys)
   for (const char* key : {"\"precision\"", "\"recall\"", "\"f1\"", "\"found\"", "\"planes\"", "\"detected\"",
                           "\"fragments\"", "\"false_planes\""})
     EXPECT_NE (json.out.find (key), std::string::npos) << key;
+}
+
+TEST (EvaluateCli, CountsTheNoPlaneSamplesThatPlanesClaim)
+{
+  // The industrial scene's pipes and tanks are on no truth plane: the truth claims none of them,
+  // a detection that puts every sample in one plane claims them all.
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (tool, "rspd_evaluate");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"industrial", dir.file ("i"), "-n", "20000"}).status, 0);
+  std::ifstream truth (dir.file ("i.gt"), std::ios::binary | std::ios::ate);
+  const std::size_t n = static_cast<std::size_t> (truth.tellg ()) / 4;
+  truth.seekg (0);
+  std::vector<std::uint32_t> labels (n);
+  truth.read (reinterpret_cast<char*> (labels.data ()), static_cast<std::streamsize> (4 * n));
+  const std::size_t unlabelled = static_cast<std::size_t> (std::count (labels.begin (), labels.end (), 0u));
+  ASSERT_GT (unlabelled, 0u);
+  {
+    const std::vector<std::uint32_t> all (n, 1u);
+    std::ofstream out (dir.file ("all.gt"), std::ios::binary);
+    out.write (reinterpret_cast<const char*> (all.data ()), static_cast<std::streamsize> (4 * n));
+  }
+  const auto none = runTool (tool, {dir.file ("i.pcd"), dir.file ("i.gt"), dir.file ("i.gt")});
+  ASSERT_EQ (none.status, 0) << none.err;
+  EXPECT_NE (none.out.find ("no-plane samples claimed: 0 of " + std::to_string (unlabelled) + " (0.00 %)"),
+             std::string::npos) << none.out;
+  const auto every = runTool (tool, {dir.file ("i.pcd"), dir.file ("i.gt"), dir.file ("all.gt"), "--json"});
+  ASSERT_EQ (every.status, 0) << every.err;
+  EXPECT_NE (every.out.find ("\"unlabelled\": " + std::to_string (unlabelled)), std::string::npos) << every.out;
+  EXPECT_NE (every.out.find ("\"unlabelled_claimed\": " + std::to_string (unlabelled)), std::string::npos) << every.out;
 }
 
 TEST (EvaluateCli, ScoresADetectionWrittenByRspdSegment)
