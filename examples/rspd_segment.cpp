@@ -14,6 +14,7 @@
 
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -30,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -56,6 +57,11 @@ const char* const kHelp =
     "                   k-neighbourhoods resolve no surface and the normals agree with their\n"
     "                   neighbours' no better than those neighbourhoods' PCA normals ('check', the\n"
     "                   default, with --normal-scale auto); 'keep' uses them as given\n"
+    "  --depth-levels keep|dither  where the depths along the camera's axis (the file's\n"
+    "                   VIEWPOINT) take a structured-light or stereo camera's levels, 'dither'\n"
+    "                   draws each sample's depth again within its level's bin, for the detection\n"
+    "                   only, so the levels' flat terraces are no planes ('keep', the default:\n"
+    "                   the samples as given)\n"
     "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
     "  --left-normals auto|trimmed|pca  the small-plane pass splits the points it left a\n"
@@ -167,6 +173,7 @@ struct Options
   int threads = 0;  // 0: leave OpenMP's default
   pcl::rspd::NormalScale normal_scale = pcl::rspd::NormalScale::Automatic;
   bool given_normal_check = true;
+  bool depth_level_dither = false;
   bool coplanar_merge = true;
   bool rim_retest = true;
   bool rim_retest_until_stable = true;
@@ -274,6 +281,8 @@ parseArguments (int argc, char** argv)
     }
     else if (arg == "--given-normals")
       o.given_normal_check = option.choice ("check", "keep");
+    else if (arg == "--depth-levels")
+      o.depth_level_dither = option.choice ("dither", "keep");
     else if (arg == "--coplanar-merge")
       o.coplanar_merge = option.choice ("on", "off");
     else if (arg == "--rim-retest")
@@ -476,6 +485,22 @@ run (const Options& o)
   if (valid == 0)
     return fail ((o.demo ? std::string ("demo scene") : o.input) + ": the cloud has no point with finite x, y and z");
 
+  if (o.verbose && !o.depth_level_dither)
+  {
+    // A hint, not a change: a structured-light or stereo camera's depth levels make planes of their own.
+    std::vector<Eigen::Vector3d> finite;
+    finite.reserve (valid);
+    for (const auto& p : *cloud.xyz)
+      if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
+        finite.emplace_back (p.x, p.y, p.z);
+    const pcl::rspd::DepthLevels levels = pcl::rspd::findDepthLevels (
+        finite, cloud.xyz->sensor_origin_.head<3> ().cast<double> (),
+        (cloud.xyz->sensor_orientation_.cast<double> () * Eigen::Vector3d::UnitZ ()).normalized ());
+    if (levels.quantized)
+      log ("depth levels: the depths along the camera's axis take %zu levels (a structured-light or stereo camera's); "
+           "--depth-levels dither keeps their terraces from becoming planes", levels.distinct);
+  }
+
   // --- detect: the class runs graph, normals, split and grow/merge; it reports each stage's time.
   t0 = std::chrono::steady_clock::now ();
   pcl::RobustPlaneSegmentation<pcl::PointXYZ, pcl::Normal> seg;
@@ -485,6 +510,7 @@ run (const Options& o)
   seg.setNumberOfNeighbours (o.k);
   seg.setNormalScale (o.normal_scale);
   seg.setGivenNormalCheck (o.given_normal_check);
+  seg.setDepthLevelDither (o.depth_level_dither);
   seg.setCoplanarMerge (o.coplanar_merge);
   seg.setRimCellRetest (o.rim_retest);
   seg.setRimRetestUntilStable (o.rim_retest_until_stable);
@@ -538,6 +564,9 @@ run (const Options& o)
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.layers_merged, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+  if (o.depth_level_dither)
+    log ("depth levels: %s", stats.depth_levels ? (std::to_string (stats.depth_levels) + " distinct depths along the camera's axis, dithered within their bins").c_str ()
+                                                : "the depths are not a camera's levels: samples as given");
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,

@@ -1010,7 +1010,7 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
   const std::vector<std::vector<std::string>> cases = {
       {"--no-such-option"}, {"-k"}, {"-k", "abc"}, {"-k", "1"}, {"--threads", "0"}, {"--threads", "x"},
       {"a.pcd", "b.pcd"}, {"--demo", "a.pcd"}, {"--png-size", "12"}, {"--demo=1"}, {"-o"},
-      {"--coplanar-merge", "yes"}, {"--coplanar-merge"}, {"--outlier-seeds=on"}, {"--outlier-seeds", "again"}, {"--frame", "x"}, {"--frame"}, {"--normal-fit", "mcd"}, {"--normal-fit"}, {"--curved-check", "1"}, {"--curved-turn", "yes"}, {"--bend-test", "on"}, {"--bend-test"},
+      {"--coplanar-merge", "yes"}, {"--coplanar-merge"}, {"--outlier-seeds=on"}, {"--outlier-seeds", "again"}, {"--frame", "x"}, {"--frame"}, {"--normal-fit", "mcd"}, {"--normal-fit"}, {"--curved-check", "1"}, {"--curved-turn", "yes"}, {"--depth-levels", "on"}, {"--bend-test", "on"}, {"--bend-test"},
       {"--assign", "some"}, {"--assign"}, {"--assign", "tail"}, {"--rim-retest", "yes"}, {"--rim-retest", "twice"}, {"--hinge-normals", "yes"}, {"--rim-retest"},
       {"--release", "1"}, {"--release"}, {"--edge-sides", "yes"}, {"--edge-sides"}, {"--step-sides", "1"}, {"--step-sides"}, {"--thick-join", "yes"}, {"--thick-join"}, {"--small-thick-join", "yes"}, {"--small-thick-join"}, {"--noisy-groups", "yes"}, {"--noisy-groups"}, {"--noisy-lone", "1"}, {"--noisy-lone"}, {"--thick-follow", "yes"}, {"--thick-follow"}, {"--layer-merge", "yes"}, {"--layer-merge"}, {"--connected-parts", "1"}, {"--connected-parts"},
       {"--bent-split", "yes"}, {"--bent-split"}, {"--released-planes", "no"}, {"--released-planes"},
@@ -1118,6 +1118,35 @@ TEST (RspdSegmentCli, SegmentsAFileAndWritesOutputs)
   EXPECT_EQ (rows, 3u) << r.out;  // three faces of a box corner
   EXPECT_TRUE (hasPngSignature (readFile (dir / "view.png")));
   EXPECT_GT (fs::file_size (dir / "view.png"), 1000u);
+}
+
+TEST (RspdSegmentCli, SaysWhenDepthsAreACamerasLevelsAndDithersThemOnRequest)
+{
+  // A wall 4 m in front of a camera looking along +z, turned 0.6 rad, its depths rounded to a
+  // structured-light camera's levels (K / m for whole m, K = 357 m) and x, y moved along the rays.
+  REQUIRE_SEGMENT_BINARY ();
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 120; ++i)
+    for (int j = 0; j < 100; ++j)
+    {
+      const double a = -1.5 + 3.0 * i / 119.0, b = -1.5 + 3.0 * j / 99.0;
+      const double z = 4.0 + a * std::sin (0.6), x = a * std::cos (0.6);
+      const double level = 357.0 / std::round (357.0 / z);
+      cloud.push_back (pcl::PointXYZ (static_cast<float> (x * level / z), static_cast<float> (b * level / z),
+                                      static_cast<float> (level)));
+    }
+  ASSERT_EQ (pcl::io::savePCDFileBinary (dir / "levels.pcd", cloud), 0);
+  const RunResult hint = runSegment (dir, {"levels.pcd", "-v"});
+  ASSERT_EQ (hint.status, 0) << hint.err;
+  EXPECT_NE (hint.err.find ("--depth-levels dither"), std::string::npos) << hint.err;
+  const RunResult dithered = runSegment (dir, {"levels.pcd", "--depth-levels", "dither", "-v"});
+  ASSERT_EQ (dithered.status, 0) << dithered.err;
+  EXPECT_NE (dithered.err.find ("distinct depths along the camera's axis, dithered"), std::string::npos) << dithered.err;
+  EXPECT_NE (dithered.out.find ("planes: 1\n"), std::string::npos) << dithered.out;
+  const RunResult as_given = runSegment (dir, {"levels.pcd"});
+  ASSERT_EQ (as_given.status, 0) << as_given.err;
+  EXPECT_EQ (as_given.out.find ("planes: 1\n"), std::string::npos) << as_given.out; // one per level
 }
 
 TEST (RspdSegmentCli, DemoWritesNothingUnlessAsked)

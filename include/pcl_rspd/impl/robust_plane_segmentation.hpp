@@ -460,6 +460,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setDepthLevelDither (bool enable)
+{
+  depth_level_dither_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedNormalTurn (bool enable)
 {
   params_.curved_normal_turn = enable;
@@ -756,6 +763,29 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
   {
     const PointT& p = (*input_)[points_.input_indices[s]];
     points_.points[s] = (Eigen::Vector3d (p.x, p.y, p.z) - points_.offset).cast<float> ();
+  }
+  if (depth_level_dither_)
+  {
+    // Departure (setDepthLevelDither): depths a camera quantized are drawn again within their bins.
+    std::vector<Eigen::Vector3d> positions (n);
+    for (std::size_t s = 0; s < n; ++s)
+    {
+      const PointT& p = (*input_)[points_.input_indices[s]];
+      positions[s] = Eigen::Vector3d (p.x, p.y, p.z);
+    }
+    const Eigen::Vector3d origin = input_->sensor_origin_.template head<3> ().template cast<double> ();
+    const Eigen::Vector3d axis =
+        (input_->sensor_orientation_.template cast<double> () * Eigen::Vector3d::UnitZ ()).normalized ();
+    const pcl::rspd::DepthLevels levels = pcl::rspd::findDepthLevels (positions, origin, axis);
+    if (levels.quantized)
+    {
+      pcl::rspd::ditherDepthLevels (positions, origin, axis, levels);
+      for (std::size_t s = 0; s < n; ++s)
+        points_.points[s] = (positions[s] - points_.offset).template cast<float> ();
+      stats_.depth_levels = levels.distinct;
+    }
+    PCL_DEBUG ("[pcl::%s::segment] depth levels: %zu distinct depths, %zu of %zu samples share theirs: %s\n", name,
+               levels.distinct, levels.on_levels, levels.samples, levels.quantized ? "dithered" : "not quantized");
   }
   // Samples in spatial (Morton) order: the k-NN graph's rows then hold nearby indices and
   // compress to a third (neighbor_graph.h), and every phase walks memory in spatial order. It also
