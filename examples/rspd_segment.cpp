@@ -32,7 +32,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -133,6 +133,9 @@ const char* const kHelp =
     "  --curved-turn on|off  the check also calls a plane curved when its quadric bends beyond\n"
     "                   chance and its normals turn across it by half their MND, where noise\n"
     "                   hides the bend from the bounds above (default on; off = those alone)\n"
+    "  --curved-fold-sides on|off  normals turning in steps spare a plane the check calls curved\n"
+    "                   only if it has 2 eps points, enough for the bent-plane split to cut it\n"
+    "                   into two faces (default on; off = at every size)\n"
     "  --hinge-normals on|off  a seed or group of cells is bent at an edge (and seeds nothing)\n"
     "                   only if its two sides' normals turn by more than 15 degrees as their\n"
     "                   planes do (default on; off = positions alone)\n"
@@ -195,6 +198,7 @@ struct Options
   bool bent_side_mnd = true;
   bool curved_check = true;
   bool curved_turn = true;
+  bool curved_fold_sides = true;
   bool bend_noise_test = true;
   bool drop_outlier_seeds = true;
   bool retest_outlier_seeds = true;
@@ -353,6 +357,8 @@ parseArguments (int argc, char** argv)
       o.curved_check = option.choice ("on", "off");
     else if (arg == "--curved-turn")
       o.curved_turn = option.choice ("on", "off");
+    else if (arg == "--curved-fold-sides")
+      o.curved_fold_sides = option.choice ("on", "off");
     else if (arg == "--hinge-normals")
       o.hinge_normals = option.choice ("on", "off");
     else if (arg == "--bend-test")
@@ -533,6 +539,7 @@ run (const Options& o)
   seg.setBentSideParentMnd (o.bent_side_mnd);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setCurvedNormalTurn (o.curved_turn);
+  seg.setCurvedFoldTwoSides (o.curved_fold_sides);
   seg.setBendNoiseTest (o.bend_noise_test);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setOutlierSeedRetest (o.retest_outlier_seeds);

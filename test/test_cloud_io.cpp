@@ -1010,7 +1010,7 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
   const std::vector<std::vector<std::string>> cases = {
       {"--no-such-option"}, {"-k"}, {"-k", "abc"}, {"-k", "1"}, {"--threads", "0"}, {"--threads", "x"},
       {"a.pcd", "b.pcd"}, {"--demo", "a.pcd"}, {"--png-size", "12"}, {"--demo=1"}, {"-o"},
-      {"--coplanar-merge", "yes"}, {"--coplanar-merge"}, {"--outlier-seeds=on"}, {"--outlier-seeds", "again"}, {"--frame", "x"}, {"--frame"}, {"--normal-fit", "mcd"}, {"--normal-fit"}, {"--curved-check", "1"}, {"--curved-turn", "yes"}, {"--depth-levels", "on"}, {"--bend-test", "on"}, {"--bend-test"},
+      {"--coplanar-merge", "yes"}, {"--coplanar-merge"}, {"--outlier-seeds=on"}, {"--outlier-seeds", "again"}, {"--frame", "x"}, {"--frame"}, {"--normal-fit", "mcd"}, {"--normal-fit"}, {"--curved-check", "1"}, {"--curved-turn", "yes"}, {"--curved-fold-sides", "2"}, {"--depth-levels", "on"}, {"--bend-test", "on"}, {"--bend-test"},
       {"--assign", "some"}, {"--assign"}, {"--assign", "tail"}, {"--rim-retest", "yes"}, {"--rim-retest", "twice"}, {"--hinge-normals", "yes"}, {"--rim-retest"},
       {"--release", "1"}, {"--release"}, {"--edge-sides", "yes"}, {"--edge-sides"}, {"--step-sides", "1"}, {"--step-sides"}, {"--thick-join", "yes"}, {"--thick-join"}, {"--small-thick-join", "yes"}, {"--small-thick-join"}, {"--noisy-groups", "yes"}, {"--noisy-groups"}, {"--noisy-lone", "1"}, {"--noisy-lone"}, {"--thick-follow", "yes"}, {"--thick-follow"}, {"--layer-merge", "yes"}, {"--layer-merge"}, {"--connected-parts", "1"}, {"--connected-parts"},
       {"--bent-split", "yes"}, {"--bent-split"}, {"--released-planes", "no"}, {"--released-planes"},

@@ -386,6 +386,16 @@ struct DetectorParameters
     * extent, about √(12/n) of their spread, and its rims' bent normals are what MND measures.
     * false = the fixed bounds alone (before issue #6's twenty-fifth session). */
   bool curved_normal_turn = true;
+  /** \brief Departure (curved-surface check): the fold ratio (curved_fold_ratio) keeps a plane the
+    * quadric calls curved only if it has 2ε samples or bends within chance at curved_turn_confidence:
+    * it keeps folds for the bent-plane split, which cuts a plane into sides of ε samples each, so a
+    * smaller plane is no fold it could cut. A facet of the room's 0.3 m pillar whose normals turn by
+    * less than √48 times their noise has a ratio of 0.6-0.8: at σ 1.5-2 cm facets of 150-266 samples
+    * (ε 100-200, shares 0.21-0.31 against 99.9 % quantiles of 0.09-0.12) were false planes, 13-19 %
+    * of the curved samples. Without the chance bound a small real face went too (the room at 20,000
+    * points and σ 1.2 cm on PCL's k = 50 normals, 9 -> 8 of 12). false = the ratio at every size
+    * (before issue #6's twenty-fifth session). */
+  bool curved_fold_two_sides = true;
   /** \brief The confidence of the noise test in the normals' path of the curved-surface check
     * (curved_normal_turn). Sparse faces' normals turn across them by their rims (the boxes at 10,000
     * points on PCL's k = 50 normals: 1.2-2.1 rad against MND 0.7-1.7), so the quadric's share decides

@@ -619,6 +619,16 @@ public:
   bool
   getCurvedNormalTurn () const { return params_.curved_normal_turn; }
 
+  /** \brief The curved-surface check's fold ratio spares a plane that bends beyond chance (99.9 %)
+    * only if it has 2ε samples (default true; false = at every size): it keeps folds for the
+    * bent-plane split, whose sides hold ε samples each. See
+    * pcl::rspd::DetectorParameters::curved_fold_two_sides. */
+  void
+  setCurvedFoldTwoSides (bool enable);
+  /** \brief Whether the fold ratio spares only planes of 2ε samples. */
+  bool
+  getCurvedFoldTwoSides () const { return params_.curved_fold_two_sides; }
+
   /** \brief Small seeds' MND floor (default true; false = a seed's own MND): a seed of the
     * small-plane pass gets at least the MND of the tightest plane grown, since the normals of its few
     * samples share most of their neighbours and agree better than its plane's do. See

@@ -467,6 +467,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setDepthLevelDither (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setCurvedFoldTwoSides (bool enable)
+{
+  params_.curved_fold_two_sides = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedNormalTurn (bool enable)
 {
   params_.curved_normal_turn = enable;
