@@ -37,7 +37,6 @@ drawOf (const Eigen::Vector3d& p)
   }
   return static_cast<double> (h >> 11) * (1.0 / 9007199254740992.0); // 53 bits
 }
-} // namespace
 
 /** A sample's depth as the camera stored it: a float. Depths recomputed from float coordinates along
   * an axis given as a float quaternion differ by a few float steps within one level. */
@@ -46,6 +45,7 @@ storedDepth (const Eigen::Vector3d& p, const Eigen::Vector3d& origin, const Eige
 {
   return static_cast<float> ((p - origin).dot (axis));
 }
+} // namespace
 
 DepthLevels
 findDepthLevels (const std::vector<Eigen::Vector3d>& positions, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis)
