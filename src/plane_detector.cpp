@@ -360,16 +360,19 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
 #pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
   for (std::ptrdiff_t p = 0; p < count; ++p)
   {
-    const PlaneCurvature c = measureCurvature (points, patches[p].members);
+    const std::vector<std::uint32_t>& members = patches[p].members;
+    const PlaneCurvature c = measureCurvature (points, members);
     const bool bent = isCurvedPatch (c, patches[p].mnd, params) ||
                       (params.curved_normal_turn &&
-                       isCurvedByNormals (c, normalTurnAcross (points, patches[p].members, c), patches[p].mnd, params));
+                       isCurvedByNormals (c, normalTurnAcross (points, members, c), patches[p].mnd, params));
+    if (!bent)
+      continue;
     // The fold ratio keeps a plane for the bent-plane split, which cuts sides of ε samples each: one
     // of fewer than 2ε samples that bends beyond chance at the normals' path's confidence is no such
     // fold (DetectorParameters::curved_fold_two_sides).
-    const bool too_small_to_fold = params.curved_fold_two_sides && patches[p].members.size () < 2 * params.min_patch_size &&
+    const bool too_small_to_fold = params.curved_fold_two_sides && members.size () < 2 * params.min_patch_size &&
                                    c.share >= chanceBendShare (c.samples, params.curved_turn_confidence);
-    curved[p] = bent && (too_small_to_fold || normalTurnRatio (points, patches[p].members, c) < params.curved_fold_ratio);
+    curved[p] = too_small_to_fold || normalTurnRatio (points, members, c) < params.curved_fold_ratio;
   }
   std::size_t dropped = 0;
   std::size_t kept = 0;
