@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -91,6 +91,9 @@ const char* const kHelp =
     "  --noisy-lone on|off  such a seed that joins no other seeds a plane alone on the same\n"
     "                   terms but eps, which its grown plane must reach (default on; needs\n"
     "                   --noisy-groups on)\n"
+    "  --noisy-ladder on|off  once such seeds seeded planes noisier than every plane found, the\n"
+    "                   noisy seeds left are offered again against those, while a step seeds\n"
+    "                   a noisier plane (default on; off = one step)\n"
     "  --thick-follow on|off  where noisy seeds seeded planes noisier than the small-plane pass's\n"
     "                   thick cells may be, its thick cells are collected again up to them\n"
     "                   (default on; needs --small-thick-join on)\n"
@@ -189,6 +192,7 @@ struct Options
   bool small_thick_join = true;
   bool noisy_groups = true;
   bool noisy_lone = true;
+  bool noisy_ladder = true;
   bool thick_follow = true;
   bool support = true;
   LeftNormals left_normals = LeftNormals::Auto;
@@ -311,6 +315,8 @@ parseArguments (int argc, char** argv)
       o.noisy_groups = option.choice ("on", "off");
     else if (arg == "--noisy-lone")
       o.noisy_lone = option.choice ("on", "off");
+    else if (arg == "--noisy-ladder")
+      o.noisy_ladder = option.choice ("on", "off");
     else if (arg == "--thick-follow")
       o.thick_follow = option.choice ("on", "off");
     else if (arg == "--step-sides")
@@ -529,6 +535,7 @@ run (const Options& o)
   seg.setSmallPassThickCellJoin (o.small_thick_join);
   seg.setNoisySeedGroups (o.noisy_groups);
   seg.setNoisyLoneSeeds (o.noisy_lone);
+  seg.setNoisyGroupLadder (o.noisy_ladder);
   seg.setThickCellsFollowNoisySeeds (o.thick_follow);
   seg.setSupportCheck (o.support);
   seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
@@ -566,10 +573,10 @@ run (const Options& o)
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
-       "pass (%zu by groups of its thick cells, %zu by groups of its noisy seeds, thick cells collected again %zu times, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
+       "pass (%zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu merged as layers, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
-       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
+       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.layers_merged, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.depth_level_dither)
     log ("depth levels: %s", stats.depth_levels ? (std::to_string (stats.depth_levels) + " distinct depths along the camera's axis, dithered within their bins").c_str ()

@@ -36,6 +36,11 @@ namespace
 /** Robust standard deviations that bound a plane's noise (a Gaussian's 3 σ: 99.7 %). */
 constexpr double kBandSigmas = 3.0;
 
+/** Most steps of the noise ladder (DetectorParameters::noisy_group_ladder). Each step's bound is
+  * above the last by the MND of a plane seeded, so the ladder ends by itself; the cap bounds the cost
+  * (the boxes at σ = 8 mm climb three steps, from 0.30 to 0.94 rad). */
+constexpr std::size_t kLadderSteps = 16;
+
 /** Most passes of the step-side rule (settleStepSides) until no sample moves. */
 constexpr int kStepSidePasses = 8;
 
@@ -747,18 +752,42 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         st.small_seeds_trimmed += round;
       }
       double noisiest_seeded = 0.0; // MND of the noisiest plane a noisy seed seeded in this round
-      for (auto& seed : joinNoisySeeds (round_points, graph, params, too_noisy, std::max (max_mnd, max_retested_mnd), max_mdp))
+      // The groups' bounds: the noisiest and thickest plane found, then, step by step on the noise
+      // ladder (DetectorParameters::noisy_group_ladder), the noisiest and thickest the last step seeded.
+      double group_mnd = std::max (max_mnd, max_retested_mnd), group_mdp = max_mdp;
+      for (std::size_t step = 0;; ++step)
       {
-        if (isBandLayer (round_points, graph, params, patches, band, labels, seed, nullptr))
-          continue;
-        for (const auto i : seed.members)
-          labels[i] = static_cast<std::uint32_t> (patches.size ());
-        seed.retested = true; // noisier than every plane found: judged again once grown
-        noisiest_seeded = std::max (noisiest_seeded, seed.mnd);
-        patches.push_back (std::move (seed));
-        band.push_back (patches.back ().mdp);
-        ++st.small_seeds;
-        ++st.small_noisy_groups;
+        double step_mnd = 0.0, step_mdp = 0.0;
+        for (auto& seed : joinNoisySeeds (round_points, graph, params, too_noisy, group_mnd, group_mdp))
+        {
+          if (isBandLayer (round_points, graph, params, patches, band, labels, seed, nullptr))
+            continue;
+          for (const auto i : seed.members)
+            labels[i] = static_cast<std::uint32_t> (patches.size ());
+          seed.retested = true; // noisier than every plane found: judged again once grown
+          noisiest_seeded = std::max (noisiest_seeded, seed.mnd);
+          step_mnd = std::max (step_mnd, seed.mnd);
+          step_mdp = std::max (step_mdp, seed.mdp);
+          patches.push_back (std::move (seed));
+          band.push_back (patches.back ().mdp);
+          ++st.small_seeds;
+          ++st.small_noisy_groups;
+          st.small_ladder_seeds += step > 0;
+        }
+        // Each step climbs only above the last (MND grows strictly, so the ladder ends); the seeds
+        // left are those whose samples no plane took.
+        if (!params.noisy_group_ladder || !(step_mnd > group_mnd) || step + 1 >= kLadderSteps)
+          break;
+        group_mnd = step_mnd;
+        group_mdp = std::max (group_mdp, step_mdp);
+        too_noisy.erase (std::remove_if (too_noisy.begin (), too_noisy.end (),
+                                         [&] (const PlanarPatch& p) {
+                                           return std::any_of (p.members.begin (), p.members.end (),
+                                                               [&] (std::uint32_t i) { return labels[i] != kNoPatch; });
+                                         }),
+                         too_noisy.end ());
+        if (too_noisy.empty ())
+          break;
       }
       if (round == 0 && params.small_cell_thick_join && params.thick_cells_follow_noisy_seeds && noisiest_seeded > thick_bound)
       {

@@ -688,6 +688,16 @@ public:
   /** \brief Whether a lone noisy small seed may seed a plane. */
   bool
   getNoisyLoneSeeds () const { return params_.noisy_lone_seeds; }
+  /** \brief Noise ladder (default true; false = one step): with the groups of noisy small seeds
+    * on, once noisy seeds seeded planes noisier than every plane found, the noisy seeds still left
+    * are offered again against those, step by step while a step seeds a noisier plane, so surfaces
+    * each a little rougher than the last are all seeded. See
+    * pcl::rspd::DetectorParameters::noisy_group_ladder. */
+  void
+  setNoisyGroupLadder (bool enable);
+  /** \brief Whether the noisy seeds climb the noise ladder. */
+  bool
+  getNoisyGroupLadder () const { return params_.noisy_group_ladder; }
   /** \brief Thick cells that follow the noisy seeds (default true; false = the bound of the planes
     * found before the pass): where noisy small seeds seeded planes noisier than the small-plane
     * pass's thick cells may be, its thick cells are collected again up to the noisiest such plane's

@@ -542,6 +542,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setNoisyLoneSeeds (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNoisyGroupLadder (bool enable)
+{
+  params_.noisy_group_ladder = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setNoisySeedGroupRatio (double ratio)
 {
   if (!(ratio >= 1.0 && std::isfinite (ratio)))
