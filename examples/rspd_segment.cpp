@@ -506,8 +506,7 @@ run (const Options& o)
       if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
         finite.emplace_back (p.x, p.y, p.z);
     const pcl::rspd::DepthLevels levels = pcl::rspd::findDepthLevels (
-        finite, cloud.xyz->sensor_origin_.head<3> ().cast<double> (),
-        (cloud.xyz->sensor_orientation_.cast<double> () * Eigen::Vector3d::UnitZ ()).normalized ());
+        finite, cloud.xyz->sensor_origin_.head<3> ().cast<double> (), pcl::rspd::viewingAxis (cloud.xyz->sensor_orientation_));
     if (levels.quantized)
       log ("depth levels: the depths along the camera's axis take %zu levels (a structured-light or stereo camera's); "
            "--depth-levels dither keeps their terraces from becoming planes", levels.distinct);

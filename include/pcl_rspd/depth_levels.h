@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cstddef>
 #include <vector>
@@ -25,6 +26,14 @@ struct DepthLevels
   std::size_t distinct = 0;    ///< levels: distinct depths, those within two float steps as one
   bool quantized = false;      ///< the depths are a camera's levels: see findDepthLevels
 };
+
+/** \brief A camera's viewing axis from a cloud's sensor orientation (PCL's VIEWPOINT quaternion):
+  * the z axis turned by it, as PCL's own viewpoint convention reads it. */
+inline Eigen::Vector3d
+viewingAxis (const Eigen::Quaternionf& orientation)
+{
+  return (orientation.cast<double> () * Eigen::Vector3d::UnitZ ()).normalized ();
+}
 
 /** \brief Whether the samples' depths along \a axis from \a origin take a camera's levels.
   *

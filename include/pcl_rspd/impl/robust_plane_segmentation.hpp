@@ -788,8 +788,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
       positions[s] = Eigen::Vector3d (p.x, p.y, p.z);
     }
     const Eigen::Vector3d origin = input_->sensor_origin_.template head<3> ().template cast<double> ();
-    const Eigen::Vector3d axis =
-        (input_->sensor_orientation_.template cast<double> () * Eigen::Vector3d::UnitZ ()).normalized ();
+    const Eigen::Vector3d axis = pcl::rspd::viewingAxis (input_->sensor_orientation_);
     const pcl::rspd::DepthLevels levels = pcl::rspd::findDepthLevels (positions, origin, axis);
     if (levels.quantized)
     {
