@@ -766,16 +766,22 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
             labels[i] = static_cast<std::uint32_t> (patches.size ());
           seed.retested = true; // noisier than every plane found: judged again once grown
           noisiest_seeded = std::max (noisiest_seeded, seed.mnd);
-          step_mnd = std::max (step_mnd, seed.mnd);
-          step_mdp = std::max (step_mdp, seed.mdp);
+          if (seed.members.size () >= params.min_patch_size)
+          {
+            // Only a plane by the paper's size rule (ε) raises the bound: climbing on smaller seeds,
+            // the room with 10 % outliers (seed 2) reached the noise of its pillar's facets, which
+            // became two false planes (samples 0.29-0.35 m from the pillar's axis, radius 0.3 m).
+            step_mnd = std::max (step_mnd, seed.mnd);
+            step_mdp = std::max (step_mdp, seed.mdp);
+          }
           patches.push_back (std::move (seed));
           band.push_back (patches.back ().mdp);
           ++st.small_seeds;
           ++st.small_noisy_groups;
           st.small_ladder_seeds += step > 0;
         }
-        // Each step climbs only above the last (MND grows strictly, so the ladder ends); the seeds
-        // left are those whose samples no plane took.
+        // Each step climbs only above the last (MND grows strictly, so the ladder ends), on the
+        // planes of ε samples or more it seeded; the seeds left are those whose samples no plane took.
         if (!params.noisy_group_ladder || !(step_mnd > group_mnd) || step + 1 >= kLadderSteps)
           break;
         group_mnd = step_mnd;
