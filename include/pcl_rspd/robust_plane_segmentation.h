@@ -689,9 +689,9 @@ public:
   bool
   getNoisyLoneSeeds () const { return params_.noisy_lone_seeds; }
   /** \brief Noise ladder (default true; false = one step): with the groups of noisy small seeds
-    * on, once noisy seeds seeded planes noisier than every plane found, the noisy seeds still left
-    * are offered again against those, step by step while a step seeds a noisier plane, so surfaces
-    * each a little rougher than the last are all seeded. See
+    * on, once noisy seeds seeded planes of ε samples or more noisier than every plane found, the
+    * noisy seeds still left are offered again against those, step by step while a step seeds such a
+    * noisier plane, so surfaces each a little rougher than the last are all seeded. See
     * pcl::rspd::DetectorParameters::noisy_group_ladder. */
   void
   setNoisyGroupLadder (bool enable);
