@@ -17,6 +17,7 @@
 #include <pcl_rspd/robust_normals.h>
 #include <pcl_rspd/robust_statistics.h>
 #include <pcl_rspd/seed_groups.h>
+#include <pcl_rspd/step_split.h>
 
 #include <pcl/console/print.h>
 
@@ -869,6 +870,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     st.bent_planes = splitBentPlanes (points, params, patches, &split);
     st.bent_joined = joinSplitFaces (points, graph, params, patches, split);
   }
+
+  if (params.step_split && !patches.empty ())
+    // Step split (departure, see DetectorParameters::step_split): on planes already cut at their
+    // edges, and before the passes that assign and move samples by each plane's noise band.
+    st.steps_split = splitSteps (points, graph, params, patches);
 
   if (params.layer_merge && patches.size () >= 2)
   {

@@ -48,14 +48,6 @@ onePlane (std::size_t n)
   return rspd_test::onePatchOfAll (n, 0.05, 0.5);
 }
 
-DetectorParameters
-parameters (int threads = 1)
-{
-  DetectorParameters p;
-  p.min_patch_size = 50;
-  p.num_threads = threads;
-  return p;
-}
 
 /** Samples of \a face that ended in a patch other than the one holding most of them, all of them and
   * those farther than \a band from the plane x = 0 (the roofs' edge). */
@@ -125,7 +117,7 @@ TEST (BentPlanes, AHingeNeedsTheNormalsToTurnToo)
   Roof r = makeRoof (40.0f * kDegree, 0.005f);
   std::vector<std::uint32_t> all (r.set.size ());
   std::iota (all.begin (), all.end (), 0u);
-  DetectorParameters p = parameters ();
+  DetectorParameters p = rspd_test::unitParameters ();
   EXPECT_TRUE (p.hinge_normal_turn);
   EXPECT_TRUE (bentAtAnEdge (r.set, all, p));
   // Normals turned by 10° only (under T1's 15°), with signs mixed as PCA leaves them.
@@ -152,13 +144,13 @@ TEST (BentPlanes, RoofHeldByOnePlaneIsSplitIntoItsFaces)
   const Roof r = makeRoof (30.0f * kDegree, 0.01f);
   std::vector<PlanarPatch> patches = onePlane (r.set.size ());
   std::vector<char> split;
-  EXPECT_EQ (splitBentPlanes (r.set, parameters (), patches, &split), 1u);
+  EXPECT_EQ (splitBentPlanes (r.set, rspd_test::unitParameters (), patches, &split), 1u);
   ASSERT_EQ (patches.size (), 2u);
   EXPECT_EQ (split, std::vector<char> ({1, 1}));
   // Its faces are no face shared by two planes.
   const NeighborGraph graph = rspd_test::bruteForceGraph (r.set.points, 20);
   std::vector<PlanarPatch> joined = patches;
-  EXPECT_EQ (joinSplitFaces (r.set, graph, parameters (), joined, split), 0u);
+  EXPECT_EQ (joinSplitFaces (r.set, graph, rspd_test::unitParameters (), joined, split), 0u);
   EXPECT_EQ (joined.size (), 2u);
   // Samples change face only within noise of both planes (3 σ / sin 30° = 6 cm of the edge).
   for (const auto& face : r.faces)
@@ -185,7 +177,7 @@ TEST (BentPlanes, FlatNoisyPlanesAreKeptWhole)
       PointSet s;
       rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, n, n, noise, 7);
       std::vector<PlanarPatch> patches = onePlane (s.size ());
-      EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 0u) << n << " " << noise;
+      EXPECT_EQ (splitBentPlanes (s, rspd_test::unitParameters (), patches), 0u) << n << " " << noise;
       EXPECT_EQ (patches.size (), 1u);
     }
 }
@@ -196,11 +188,11 @@ TEST (BentPlanes, BendWithinT1sSlopeIsKeptWhole)
   // within one planar cell (90 - 75 = 15 degrees).
   const Roof r = makeRoof (10.0f * kDegree, 0.002f);
   std::vector<PlanarPatch> patches = onePlane (r.set.size ());
-  EXPECT_EQ (splitBentPlanes (r.set, parameters (), patches), 0u);
+  EXPECT_EQ (splitBentPlanes (r.set, rspd_test::unitParameters (), patches), 0u);
   // 20 degrees is an edge.
   const Roof r20 = makeRoof (20.0f * kDegree, 0.002f);
   patches = onePlane (r20.set.size ());
-  EXPECT_EQ (splitBentPlanes (r20.set, parameters (), patches), 1u);
+  EXPECT_EQ (splitBentPlanes (r20.set, rspd_test::unitParameters (), patches), 1u);
 }
 
 TEST (BentPlanes, FaceSmallerThanEpsilonStaysWithThePlane)
@@ -211,7 +203,7 @@ TEST (BentPlanes, FaceSmallerThanEpsilonStaysWithThePlane)
   const float a = 40.0f * kDegree;
   rspd_test::addRectangle (s, {0, 0, 0}, {0.08f * std::cos (a), 0, 0.08f * std::sin (a)}, {0, 0.6f, 0}, 8, 6, 0.002f, 2);
   std::vector<PlanarPatch> patches = onePlane (s.size ());
-  EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 0u);
+  EXPECT_EQ (splitBentPlanes (s, rspd_test::unitParameters (), patches), 0u);
   EXPECT_EQ (patches[0].members.size (), s.size ());
 }
 
@@ -231,7 +223,7 @@ TEST (BentPlanes, ThreeFacesAreSplitIntoThree)
     o += step;
   }
   std::vector<PlanarPatch> patches = onePlane (s.size ());
-  EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 2u);
+  EXPECT_EQ (splitBentPlanes (s, rspd_test::unitParameters (), patches), 2u);
   ASSERT_EQ (patches.size (), 3u);
   for (const auto& face : faces)
     EXPECT_LE (strays (s, patches, face).first, face.size () / 20);
@@ -253,8 +245,8 @@ TEST (BentPlanes, ResultDoesNotDependOnTheThreadCount)
   }
   p1.push_back (rspd_test::makePatch (second, {5, 0, 0}, {0, 0, 1}, 0.05, 0.5));
   std::vector<PlanarPatch> p2 = p1;
-  EXPECT_EQ (splitBentPlanes (s, parameters (1), p1), 2u);
-  EXPECT_EQ (splitBentPlanes (s, parameters (2), p2), 2u);
+  EXPECT_EQ (splitBentPlanes (s, rspd_test::unitParameters (1), p1), 2u);
+  EXPECT_EQ (splitBentPlanes (s, rspd_test::unitParameters (2), p2), 2u);
   ASSERT_EQ (p1.size (), p2.size ());
   for (std::size_t l = 0; l < p1.size (); ++l)
     EXPECT_EQ (p1[l].members, p2[l].members);
@@ -288,11 +280,11 @@ TEST (BentPlanes, SetsThatDetermineNoTwoPlanesAreRefused)
   EXPECT_FALSE (fitHinge (s, same, fit));
   std::vector<PlanarPatch> patches {rspd_test::makePatch (line, {0, 0, 0}, {0, 0, 1}, 0.05, 0.5),
                                     rspd_test::makePatch (same, {5, 5, 5}, {0, 0, 1}, 0.05, 0.5)};
-  EXPECT_EQ (splitBentPlanes (s, parameters (), patches), 0u);
+  EXPECT_EQ (splitBentPlanes (s, rspd_test::unitParameters (), patches), 0u);
   EXPECT_EQ (patches[0].members, line);
   EXPECT_EQ (patches[1].members, same);
   std::vector<PlanarPatch> none;
-  EXPECT_EQ (splitBentPlanes (s, parameters (), none), 0u);
+  EXPECT_EQ (splitBentPlanes (s, rspd_test::unitParameters (), none), 0u);
 }
 
 namespace
@@ -319,7 +311,7 @@ makeHalves (float noise, float step, float turn, float gap = 0.0f)
   for (const auto* half : {&left, &right})
   {
     PlaneEstimate e;
-    EXPECT_TRUE (estimatePlane (h.set, *half, parameters (), e));
+    EXPECT_TRUE (estimatePlane (h.set, *half, rspd_test::unitParameters (), e));
     PlanarPatch p;
     p.members = *half;
     p.first_index = half->front ();
@@ -334,26 +326,26 @@ makeHalves (float noise, float step, float turn, float gap = 0.0f)
 TEST (BentPlanes, FaceSharedByTwoSplitPlanesIsJoinedAgain)
 {
   Halves h = makeHalves (0.01f, 0.0f, 0.0f);
-  EXPECT_EQ (joinSplitFaces (h.set, h.graph, parameters (), h.planes, {1, 1}), 1u);
+  EXPECT_EQ (joinSplitFaces (h.set, h.graph, rspd_test::unitParameters (), h.planes, {1, 1}), 1u);
   ASSERT_EQ (h.planes.size (), 1u);
   EXPECT_EQ (h.planes[0].members.size (), h.set.size ());
   EXPECT_TRUE (std::is_sorted (h.planes[0].members.begin (), h.planes[0].members.end ()));
   EXPECT_EQ (h.planes[0].first_index, 0u);
   // One part of a split plane is enough; neither is not.
   Halves one = makeHalves (0.01f, 0.0f, 0.0f);
-  EXPECT_EQ (joinSplitFaces (one.set, one.graph, parameters (), one.planes, {0, 1}), 1u);
+  EXPECT_EQ (joinSplitFaces (one.set, one.graph, rspd_test::unitParameters (), one.planes, {0, 1}), 1u);
   Halves none = makeHalves (0.01f, 0.0f, 0.0f);
-  EXPECT_EQ (joinSplitFaces (none.set, none.graph, parameters (), none.planes, {0, 0}), 0u);
-  EXPECT_EQ (joinSplitFaces (none.set, none.graph, parameters (), none.planes, {}), 0u); // a short list
+  EXPECT_EQ (joinSplitFaces (none.set, none.graph, rspd_test::unitParameters (), none.planes, {0, 0}), 0u);
+  EXPECT_EQ (joinSplitFaces (none.set, none.graph, rspd_test::unitParameters (), none.planes, {}), 0u); // a short list
   Halves short_list = makeHalves (0.01f, 0.0f, 0.0f);
-  EXPECT_EQ (joinSplitFaces (short_list.set, short_list.graph, parameters (), short_list.planes, {1}), 1u);
+  EXPECT_EQ (joinSplitFaces (short_list.set, short_list.graph, rspd_test::unitParameters (), short_list.planes, {1}), 1u);
   EXPECT_EQ (none.planes.size (), 2u);
   // Nor is a part of a split plane elsewhere.
   const std::vector<std::uint32_t> far =
       rspd_test::addRectangle (none.set, {5, 0, 0}, {0.3f, 0, 0}, {0, 0.3f, 0}, 10, 10, 0.01f, 13);
   none.planes.push_back (rspd_test::makePatch (far, {5.15, 0.15, 0}, {0, 0, 1}, 0.03, 0.3));
   none.graph = rspd_test::bruteForceGraph (none.set.points, 20);
-  EXPECT_EQ (joinSplitFaces (none.set, none.graph, parameters (), none.planes, {0, 0, 1}), 0u);
+  EXPECT_EQ (joinSplitFaces (none.set, none.graph, rspd_test::unitParameters (), none.planes, {0, 0, 1}), 0u);
   EXPECT_EQ (none.planes.size (), 3u);
 }
 
@@ -362,7 +354,7 @@ TEST (BentPlanes, FacesAtAnEdgeAStepOrAGapStayApart)
   // A 30° edge (normals beyond T1's 15°), a step of 5 σ (a hinge fit explains it), and a gap of
   // 10 cm (no graph edge between the halves).
   Halves edge = makeHalves (0.005f, 0.0f, 30.0f * kDegree);
-  EXPECT_EQ (joinSplitFaces (edge.set, edge.graph, parameters (), edge.planes, {1, 1}), 0u);
+  EXPECT_EQ (joinSplitFaces (edge.set, edge.graph, rspd_test::unitParameters (), edge.planes, {1, 1}), 0u);
   // 25° under 8 cm of noise: a hinge fit no longer tells the faces apart, their normals do.
   Halves noisy = makeHalves (0.08f, 0.0f, 25.0f * kDegree);
   HingeFit fit;
@@ -370,11 +362,11 @@ TEST (BentPlanes, FacesAtAnEdgeAStepOrAGapStayApart)
   std::iota (all.begin (), all.end (), 0u);
   ASSERT_TRUE (fitHinge (noisy.set, all, fit));
   EXPECT_GT (fit.split_sigma, 0.8 * fit.single_sigma);
-  EXPECT_EQ (joinSplitFaces (noisy.set, noisy.graph, parameters (), noisy.planes, {1, 1}), 0u);
+  EXPECT_EQ (joinSplitFaces (noisy.set, noisy.graph, rspd_test::unitParameters (), noisy.planes, {1, 1}), 0u);
   Halves step = makeHalves (0.005f, 0.025f, 0.0f);
-  EXPECT_EQ (joinSplitFaces (step.set, step.graph, parameters (), step.planes, {1, 1}), 0u);
+  EXPECT_EQ (joinSplitFaces (step.set, step.graph, rspd_test::unitParameters (), step.planes, {1, 1}), 0u);
   Halves gap = makeHalves (0.005f, 0.0f, 0.0f, 0.1f);
-  EXPECT_EQ (joinSplitFaces (gap.set, gap.graph, parameters (), gap.planes, {1, 1}), 0u);
+  EXPECT_EQ (joinSplitFaces (gap.set, gap.graph, rspd_test::unitParameters (), gap.planes, {1, 1}), 0u);
   EXPECT_EQ (gap.planes.size (), 2u);
 }
 
@@ -384,7 +376,7 @@ TEST (BentPlanes, NoisySeedsPlaneOverAnEdgeIsSplitIntoFlatSides)
   Roof roof = makeRoof (40.0f * kDegree, 0.005f);
   auto planes = onePlane (roof.set.size ());
   planes[0].retested = true;
-  EXPECT_EQ (splitBentNoisyPlanes (roof.set, parameters (), planes), 1u);
+  EXPECT_EQ (splitBentNoisyPlanes (roof.set, rspd_test::unitParameters (), planes), 1u);
   ASSERT_EQ (planes.size (), 2u);
   for (const auto& plane : planes)
   {
@@ -399,12 +391,12 @@ TEST (BentPlanes, NoisySeedsPlaneOverAnEdgeIsSplitIntoFlatSides)
   }
   // The planes the split seeded are left to the bent-plane split; a flat roof is no bend.
   auto seeded = onePlane (roof.set.size ());
-  EXPECT_EQ (splitBentNoisyPlanes (roof.set, parameters (), seeded), 0u);
+  EXPECT_EQ (splitBentNoisyPlanes (roof.set, rspd_test::unitParameters (), seeded), 0u);
   EXPECT_EQ (seeded.size (), 1u);
   Roof flat = makeRoof (0.0f, 0.005f);
   auto flat_plane = onePlane (flat.set.size ());
   flat_plane[0].retested = true;
-  EXPECT_EQ (splitBentNoisyPlanes (flat.set, parameters (), flat_plane), 0u);
+  EXPECT_EQ (splitBentNoisyPlanes (flat.set, rspd_test::unitParameters (), flat_plane), 0u);
 }
 
 TEST (BentPlanes, NoisySeedsPlaneOnACylinderIsNotSplit)
@@ -425,11 +417,11 @@ TEST (BentPlanes, NoisySeedsPlaneOnACylinderIsNotSplit)
     }
   HingeFit fit;
   ASSERT_TRUE (fitHinge (s, onePlane (s.size ())[0].members, fit));
-  EXPECT_TRUE (isBend (fit, parameters ()));
+  EXPECT_TRUE (isBend (fit, rspd_test::unitParameters ()));
   auto planes = onePlane (s.size ());
   planes[0].retested = true;
-  EXPECT_FALSE (isFlatPatch (s, parameters (), planes[0], true));
-  EXPECT_EQ (splitBentNoisyPlanes (s, parameters (), planes), 0u);
+  EXPECT_FALSE (isFlatPatch (s, rspd_test::unitParameters (), planes[0], true));
+  EXPECT_EQ (splitBentNoisyPlanes (s, rspd_test::unitParameters (), planes), 0u);
   EXPECT_EQ (planes.size (), 1u);
 }
 
@@ -444,7 +436,7 @@ TEST (BentPlanes, SidesAsNoisyAsTheirPlaneArePlanesPastT2)
   std::normal_distribution<float> jitter (0.0f, 0.35f);
   for (auto& n : r.set.normals)
     n = (n + Eigen::Vector3f (jitter (rng), jitter (rng), jitter (rng))).normalized ();
-  DetectorParameters p = parameters ();
+  DetectorParameters p = rspd_test::unitParameters ();
   PlaneEstimate whole, side;
   ASSERT_TRUE (estimatePlane (r.set, onePlane (r.set.size ())[0].members, p, whole));
   ASSERT_TRUE (estimatePlane (r.set, r.faces[0], p, side));

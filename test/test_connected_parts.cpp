@@ -45,14 +45,6 @@ onePlane (std::size_t n)
   return rspd_test::onePatchOfAll (n, 0.01, 0.1);
 }
 
-DetectorParameters
-parameters (int threads)
-{
-  DetectorParameters p;
-  p.min_patch_size = 50;
-  p.num_threads = threads;
-  return p;
-}
 } // namespace
 
 TEST (ConnectedParts, PlaneBridgedByAnotherSurfaceIsSplitIntoItsParts)
@@ -61,7 +53,7 @@ TEST (ConnectedParts, PlaneBridgedByAnotherSurfaceIsSplitIntoItsParts)
   const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
   std::vector<PlanarPatch> patches = onePlane (b.set.size ());
   std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
-  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, parameters (1), patches, labels), 1u);
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), patches, labels), 1u);
   ASSERT_EQ (patches.size (), 2u);
   // Equal parts: the one holding the lower sample keeps the plane's place.
   for (const auto i : b.left)
@@ -90,7 +82,7 @@ TEST (ConnectedParts, BridgeOfInliersKeepsThePlaneWhole)
   std::vector<PlanarPatch> patches = onePlane (b.set.size ());
   std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
   const std::vector<std::uint32_t> before = labels;
-  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, parameters (1), patches, labels), 0u);
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), patches, labels), 0u);
   EXPECT_EQ (patches.size (), 1u);
   EXPECT_EQ (labels, before);
 }
@@ -103,7 +95,7 @@ TEST (ConnectedParts, PartsSmallerThanEpsilonStayWithThePlane)
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
   std::vector<PlanarPatch> patches = onePlane (s.size ());
   std::vector<std::uint32_t> labels = labelSamples (s.size (), patches);
-  EXPECT_EQ (splitDisconnectedPlanes (s, g, parameters (1), patches, labels), 0u);
+  EXPECT_EQ (splitDisconnectedPlanes (s, g, rspd_test::unitParameters (1), patches, labels), 0u);
   EXPECT_EQ (patches[0].members.size (), s.size ());
 }
 
@@ -113,8 +105,8 @@ TEST (ConnectedParts, ResultDoesNotDependOnTheThreadCount)
   const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
   std::vector<PlanarPatch> p1 = onePlane (b.set.size ()), p2 = p1;
   std::vector<std::uint32_t> l1 = labelSamples (b.set.size (), p1), l2 = l1;
-  splitDisconnectedPlanes (b.set, g, parameters (1), p1, l1);
-  splitDisconnectedPlanes (b.set, g, parameters (2), p2, l2);
+  splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), p1, l1);
+  splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (2), p2, l2);
   EXPECT_EQ (l1, l2);
   ASSERT_EQ (p1.size (), p2.size ());
   for (std::size_t l = 0; l < p1.size (); ++l)

@@ -6,6 +6,7 @@
 
 #include <pcl_rspd/neighbor_graph.h>
 #include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/point_set.h>
 
 #include <Eigen/Geometry>
@@ -71,6 +72,16 @@ makePatch (const std::vector<std::uint32_t>& members, const Eigen::Vector3d& c, 
   e.distance_halfwidth = mdp;
   e.angle_halfwidth = mnd;
   p.setEstimate (e);
+  return p;
+}
+
+/** Detector parameters of the phase tests: ε = 50 samples, \a threads OpenMP threads. */
+inline pcl::rspd::DetectorParameters
+unitParameters (int threads = 1)
+{
+  pcl::rspd::DetectorParameters p;
+  p.min_patch_size = 50;
+  p.num_threads = threads;
   return p;
 }
 

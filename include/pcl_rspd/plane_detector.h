@@ -301,6 +301,13 @@ struct DetectorParameters
     * M3 and M4 to join them (the room's cabinet front: 1,208 and 621 samples 4.6 mm apart, MDPs 5.3
     * and 3.8 mm). false = such layers stay apart. */
   bool layer_merge = true;
+  /** \brief Departure (step split, see splitSteps): after the bent-plane split, a region of a plane
+    * that lies parallel to the rest, offset by a step within the noise band (its neighbourhoods'
+    * mean distance off the plane by half a robust σ, an inside, the offset across its border, planes
+    * meeting beyond twice its half extent), is split off as a plane of its own. A door 2 cm proud of
+    * its wall scanned at σ = 8 mm to 2.5 cm is taken with the wall by growth: no test of one
+    * sample's distance or normal tells it apart. false = such a region stays in its plane. */
+  bool step_split = true;
   /** \brief Departure (bent noisy planes, see splitBentNoisyPlanes): where a plane a noisy seed
     * seeded is judged flat once grown, one that is not but that two flat planes meeting at an edge
     * explain is split into them instead of dropped. false = it is dropped (and the paper seeds no
@@ -467,6 +474,7 @@ struct DetectorStatistics
   std::size_t rim_seeds = 0;         ///< small-cell pass: cells seeded by their inliers (rim_cell_retest), before the MND check
   std::size_t split_planes = 0;      ///< planes added by splitting planes into connected parts (connected_parts)
   std::size_t bent_planes = 0;       ///< planes added by splitting bent planes at their edge (bent_plane_split)
+  std::size_t steps_split = 0;       ///< planes added by splitting off a step (step_split)
   std::size_t layers_merged = 0;     ///< planes merged into a plane as layers of its noise band (layer_merge)
   std::size_t bent_joined = 0;       ///< of the planes then, those joined to another as one face (joinSplitFaces)
   std::size_t noisy_bent_planes = 0; ///< noisy seeds' planes split at an edge before they are judged flat (noisy_bent_split)

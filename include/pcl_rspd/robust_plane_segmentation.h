@@ -122,6 +122,9 @@ struct RobustPlane
   *    planes meeting at an edge (more than 90° minus T1's angle apart, the robust spread down to 0.8
   *    of one plane's or less, each side passing T1-T3) is split there, and each part again; noisy
   *    normals give a wide MND, and growth carries a plane over an edge onto the next face;
+  *  - step split (setStepSplit(false) for the paper): then a region of a plane whose neighbourhoods
+  *    lie off it on one side, with an inside, offset across its border and parallel to the rest
+  *    across its extent, is split off: a door 2 cm proud of a wall at σ = 1.5 cm lies in its band;
   *  - band layers (setLayerMerge(false) for the paper): then a plane lying among a larger plane's
   *    samples (half of its members beside one of them) and within that plane's noise band across its
   *    extent is merged into it: two seeds of one noisy face grow into two layers of its band;
@@ -498,6 +501,16 @@ public:
   /** \brief Whether layers of a plane's noise band are merged into it. */
   bool
   getLayerMerge () const { return params_.layer_merge; }
+
+  /** \brief Step split (default true; false = the region stays in its plane): after the bent-plane
+    * split, a region of a plane that lies parallel to the rest, offset by a step within the noise
+    * band (a door 2 cm proud of its wall at σ = 1.5 cm), is split off as a plane of its own. See
+    * pcl::rspd::splitSteps and pcl::rspd::DetectorParameters::step_split. */
+  void
+  setStepSplit (bool enable);
+  /** \brief Whether regions offset by a step within a plane's noise band are split off. */
+  bool
+  getStepSplit () const { return params_.step_split; }
 
   /** \brief Edge sides (default true; false = the paper): where two planes meet, a sample of one
     * whose projection onto it lies beyond the line where they meet leaves it, for the other plane

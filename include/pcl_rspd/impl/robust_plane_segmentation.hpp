@@ -376,6 +376,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setLayerMerge (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setStepSplit (bool enable)
+{
+  params_.step_split = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setBentPlaneSplit (bool enable)
 {
   params_.bent_plane_split = enable;

@@ -1,0 +1,53 @@
+/*
+ * pcl_rspd: step split (departure) — a region of a plane that lies parallel to the rest, offset by a
+ * step within the noise band (a door 2 cm proud of its wall), is split off as a plane of its own.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief Step split (departure, DetectorParameters::step_split): a plane that holds a region offset
+  * parallel to the rest of it, by less than its noise band, is split in two.
+  *
+  * A door 2 cm proud of a wall scanned at σ = 1.5 cm lies within the wall's band; growth takes it
+  * with the wall and no test that reads one sample (distance, normal) can tell it apart. Its samples
+  * can: averaged over a neighbourhood, their distances to the plane sit 2 cm off, where single
+  * distances scatter over 1.5. Per plane, each member's distance to the plane is averaged over its
+  * graph neighbours in that plane; members whose mean departs from the median distance by more than
+  * kStepSmoothSigmas robust σ, on one side, join in graph-connected regions. The largest region that
+  * is a step becomes a plane of its own (one split per plane and call), provided:
+  *  - it and the rest hold ε samples each;
+  *  - it has an inside: at most kStepBorderShare of its members border the rest (a strip along an
+  *    edge, where the next face's samples bend the mean, is all border);
+  *  - its plane and the rest's are parallel across it: they meet no nearer to its centre than
+  *    kStepCrossReach times its half extent, and the angle between them is within both MNDs;
+  *  - the offset happens at the border: the median distance (to the rest's plane) of the region's
+  *    border members and that of the rest's members beside it differ, on the offset's side, by at
+  *    least kStepJumpShare of the offset between the two planes (a bowed or warped surface changes
+  *    its distance gradually, a step at once);
+  *  - the offset is at least the robust σ of each part about its own plane.
+  * Planes are judged independently on the labels at the call, so the result does not depend on the
+  * thread count; the new planes are appended in the order of the planes they were split from.
+  * \param[in] points samples (positions and normals)
+  * \param[in] graph k-NN graph
+  * \param[in] params ε (min_patch_size), the estimate's parameters and num_threads
+  * \param[in,out] patches planes; a split plane keeps the rest, the region is appended
+  * \return planes split
+  */
+std::size_t
+splitSteps (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+            std::vector<PlanarPatch>& patches);
+
+} // namespace rspd
+} // namespace pcl

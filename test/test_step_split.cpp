@@ -1,0 +1,136 @@
+/*
+ * Tests of the step split (departure, splitSteps): a region offset parallel to the rest of its plane,
+ * by less than the plane's noise band, is split off; bowls, strips and flat planes are not.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/step_split.h>
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+
+using namespace pcl::rspd;
+
+namespace
+{
+/** A 60 x 60 grid, 3 cm apart, in the plane z = 0 (1.8 m square), its height given by \a height
+  * plus Gaussian noise \a sigma along z; exact normals (0, 0, 1). One patch holds every sample. */
+struct Wall
+{
+  PointSet set;
+  std::vector<PlanarPatch> patches;
+  std::vector<char> raised; ///< per sample: whether \a height put it off z = 0
+};
+
+Wall
+makeWall (const std::function<double (double, double)>& height, float sigma, std::uint32_t seed, float scale = 1.0f)
+{
+  Wall w;
+  std::mt19937 rng (seed);
+  std::normal_distribution<float> g (0.0f, 1.0f);
+  std::vector<std::uint32_t> all;
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j)
+    {
+      const double x = 0.03 * i, y = 0.03 * j, h = height (x, y);
+      all.push_back (static_cast<std::uint32_t> (w.set.points.size ()));
+      w.set.points.push_back (scale * Eigen::Vector3f (static_cast<float> (x), static_cast<float> (y), static_cast<float> (h) + sigma * g (rng)));
+      w.set.normals.emplace_back (0.0f, 0.0f, 1.0f);
+      w.set.input_indices.push_back (static_cast<pcl::index_t> (w.set.input_indices.size ()));
+      w.raised.push_back (h != 0.0);
+    }
+  w.patches = {rspd_test::makePatch (all, {0, 0, 0}, {0, 0, 1}, 3.0 * sigma * scale, 0.1)};
+  return w;
+}
+
+/** A 0.9 m square "door" (900 samples) 2 cm proud of the wall, away from its rim. A third of its
+  * samples border the wall over k = 30 neighbours (a 0.6 m one, 400 samples, has half). */
+double
+door (double x, double y)
+{
+  return (x > 0.44 && x < 1.34 && y > 0.44 && y < 1.34) ? 0.02 : 0.0;
+}
+
+} // namespace
+
+TEST (StepSplit, DoorProudOfItsWallWithinTheNoiseIsSplitOff)
+{
+  // 2 cm proud at σ = 1.5 cm: within the wall's band (4.5 cm); one sample's distance cannot tell,
+  // its neighbourhood's mean can.
+  Wall w = makeWall (door, 0.015f, 1);
+  const NeighborGraph g = rspd_test::bruteForceGraph (w.set.points, 30);
+  ASSERT_EQ (splitSteps (w.set, g, rspd_test::unitParameters (), w.patches), 1u);
+  ASSERT_EQ (w.patches.size (), 2u);
+  const PlanarPatch& rest = w.patches[0];
+  const PlanarPatch& region = w.patches[1];
+  EXPECT_EQ (rest.members.size () + region.members.size (), w.set.size ());
+  std::size_t door_samples = 0, door_in_region = 0;
+  for (std::size_t i = 0; i < w.set.size (); ++i)
+    door_samples += w.raised[i];
+  for (const auto i : region.members)
+    door_in_region += w.raised[i];
+  EXPECT_GE (door_in_region, 0.85 * door_samples) << door_in_region << " of " << door_samples;
+  EXPECT_GE (door_in_region, 0.9 * region.members.size ()) << region.members.size ();
+  // Both planes are parallel to the wall, 2 cm apart.
+  EXPECT_GT (std::abs (region.normal.z ()), 0.999);
+  EXPECT_GT (std::abs (rest.normal.z ()), 0.999);
+  EXPECT_NEAR (region.center.z () - rest.center.z (), 0.02, 0.005);
+  EXPECT_EQ (region.first_index, *std::min_element (region.members.begin (), region.members.end ()));
+}
+
+TEST (StepSplit, FlatPlaneIsNotSplit)
+{
+  Wall w = makeWall ([] (double, double) { return 0.0; }, 0.015f, 2);
+  const NeighborGraph g = rspd_test::bruteForceGraph (w.set.points, 30);
+  const std::vector<std::uint32_t> before = w.patches[0].members;
+  EXPECT_EQ (splitSteps (w.set, g, rspd_test::unitParameters (), w.patches), 0u);
+  ASSERT_EQ (w.patches.size (), 1u);
+  EXPECT_EQ (w.patches[0].members, before);
+}
+
+TEST (StepSplit, BowedSurfaceIsNotSplit)
+{
+  // A bowl 4 cm deep over the wall's half-diagonal: its middle lies off the plane as a door would,
+  // but its distance changes gradually across the region's border, where a step's changes at once.
+  Wall w = makeWall ([] (double x, double y) { return 0.04 * ((x - 0.9) * (x - 0.9) + (y - 0.9) * (y - 0.9)) / 1.62 + 1e-9; },
+                     0.01f, 3);
+  const NeighborGraph g = rspd_test::bruteForceGraph (w.set.points, 30);
+  EXPECT_EQ (splitSteps (w.set, g, rspd_test::unitParameters (), w.patches), 0u);
+  EXPECT_EQ (w.patches.size (), 1u);
+}
+
+TEST (StepSplit, StripAlongTheRimIsNotSplit)
+{
+  // A strip two samples wide along one rim, 2 cm off: a step, but no region with an inside (every
+  // sample borders the rest), as the strips that a next face's samples push off a wall's edge.
+  Wall w = makeWall ([] (double x, double) { return x < 0.05 ? 0.02 : 0.0; }, 0.015f, 4);
+  const NeighborGraph g = rspd_test::bruteForceGraph (w.set.points, 30);
+  EXPECT_EQ (splitSteps (w.set, g, rspd_test::unitParameters (), w.patches), 0u);
+}
+
+TEST (StepSplit, RegionSmallerThanEpsilonIsNotSplit)
+{
+  Wall w = makeWall (door, 0.015f, 1);
+  const NeighborGraph g = rspd_test::bruteForceGraph (w.set.points, 30);
+  DetectorParameters p = rspd_test::unitParameters ();
+  p.min_patch_size = 1000; // the door holds 900 samples
+  EXPECT_EQ (splitSteps (w.set, g, p, w.patches), 0u);
+}
+
+TEST (StepSplit, SplitDoesNotDependOnScaleOrThreadCount)
+{
+  Wall a = makeWall (door, 0.015f, 5);
+  Wall b = makeWall (door, 0.015f, 5, 1000.0f);
+  Wall c = makeWall (door, 0.015f, 5);
+  const NeighborGraph ga = rspd_test::bruteForceGraph (a.set.points, 30);
+  const NeighborGraph gb = rspd_test::bruteForceGraph (b.set.points, 30);
+  ASSERT_EQ (splitSteps (a.set, ga, rspd_test::unitParameters (1), a.patches), 1u);
+  ASSERT_EQ (splitSteps (b.set, gb, rspd_test::unitParameters (1), b.patches), 1u);
+  ASSERT_EQ (splitSteps (c.set, ga, rspd_test::unitParameters (2), c.patches), 1u);
+  EXPECT_EQ (a.patches[1].members, b.patches[1].members);
+  EXPECT_EQ (a.patches[1].members, c.patches[1].members);
+  EXPECT_EQ (a.patches[0].members, c.patches[0].members);
+}
