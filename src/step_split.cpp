@@ -30,7 +30,7 @@ constexpr double kStepSmoothSigmas = 0.5;
 constexpr double kStepBorderShare = 0.5;
 
 /** How far, in half extents of the region, the two planes must meet from its centre. Doors in the
-  * noisy rooms: 3.1 to 17; real scans' warped patches (room_scan1, office1, table_scene_mug): 0.4
+  * noisy rooms: 3.1 to 13; real scans' warped patches (room_scan1, office1, table_scene_mug): 0.4
   * to 8.6, most below 2. */
 constexpr double kStepCrossReach = 2.0;
 
