@@ -136,38 +136,57 @@ findStep (const PointSet& points, const NeighborGraph& graph, const DetectorPara
   std::stable_sort (order.begin (), order.end (),
                     [&] (std::uint32_t a, std::uint32_t b) { return regions[a].size () > regions[b].size (); });
 
-  std::vector<char> in_region (m, 0), beside (m, 0);
+  // Marks of the region judged and of the rest's members beside it, cleared after each region (only
+  // the entries set), so that judging many regions does not sweep the whole plane each time.
+  std::vector<char> in_region (m, 0), is_beside (m, 0);
+  std::vector<std::uint32_t> border, beside;
+  const auto clearMarks = [&] (const std::vector<std::uint32_t>& region) {
+    for (const auto q : region)
+      in_region[q] = 0;
+    for (const auto q : beside)
+      is_beside[q] = 0;
+  };
   for (const auto r : order)
   {
     const auto& region = regions[r];
-    if (region.size () < params.min_patch_size || m - region.size () < params.min_patch_size)
+    if (region.size () < params.min_patch_size)
       break; // the rest are smaller still
-    std::fill (in_region.begin (), in_region.end (), 0);
+    if (m - region.size () < params.min_patch_size)
+      continue;
     for (const auto q : region)
       in_region[q] = 1;
 
     // Border members of the region, and the rest's members beside them.
-    std::fill (beside.begin (), beside.end (), 0);
-    std::vector<std::uint32_t> border;
+    border.clear ();
+    beside.clear ();
     for (const auto q : region)
     {
       bool borders = false;
       graph.forEachNeighbor (members[q], [&] (std::uint32_t j) {
-        if (labels[j] == p && !in_region[slot[j]])
+        const std::uint32_t w = slot[j];
+        if (labels[j] == p && !in_region[w])
         {
           borders = true;
-          beside[slot[j]] = 1;
+          if (!is_beside[w])
+          {
+            is_beside[w] = 1;
+            beside.push_back (w);
+          }
         }
       });
       if (borders)
         border.push_back (q);
     }
     if (static_cast<double> (border.size ()) > kStepBorderShare * static_cast<double> (region.size ()))
+    {
+      clearMarks (region);
       continue;
+    }
 
     Step s;
     for (std::size_t k = 0; k < m; ++k)
       (in_region[k] ? s.region : s.rest).push_back (members[k]);
+    clearMarks (region);
     if (!estimatePlane (points, s.region, params, s.region_plane) || !estimatePlane (points, s.rest, params, s.rest_plane))
       continue;
     const PlaneEstimate& a = s.region_plane;
@@ -184,9 +203,8 @@ findStep (const PointSet& points, const NeighborGraph& graph, const DetectorPara
     std::vector<double> inner, outer;
     for (const auto q : border)
       inner.push_back (distanceTo (points, members[q], b.center, b.normal));
-    for (std::size_t k = 0; k < m; ++k)
-      if (beside[k])
-        outer.push_back (distanceTo (points, members[k], b.center, b.normal));
+    for (const auto q : beside)
+      outer.push_back (distanceTo (points, members[q], b.center, b.normal));
     if (inner.empty () || outer.empty ())
       continue;
     const double jump = median (inner) - median (outer);

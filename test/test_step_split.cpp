@@ -134,3 +134,19 @@ TEST (StepSplit, SplitDoesNotDependOnScaleOrThreadCount)
   EXPECT_EQ (a.patches[1].members, c.patches[1].members);
   EXPECT_EQ (a.patches[0].members, c.patches[0].members);
 }
+
+TEST (StepSplit, NoPlanesAndNoiseFreePlanesAreLeftAlone)
+{
+  // No planes: nothing to judge. A noise-free wall has no robust σ to measure a region against (its
+  // distances are all zero but the door's); such a door lies far outside the wall's band and is
+  // seeded by the split, not by this pass.
+  Wall w = makeWall (door, 0.0f, 1);
+  const NeighborGraph g = rspd_test::bruteForceGraph (w.set.points, 30);
+  std::vector<PlanarPatch> none;
+  EXPECT_EQ (splitSteps (w.set, g, rspd_test::unitParameters (), none), 0u);
+  EXPECT_TRUE (none.empty ());
+  const std::vector<std::uint32_t> before = w.patches[0].members;
+  EXPECT_EQ (splitSteps (w.set, g, rspd_test::unitParameters (), w.patches), 0u);
+  ASSERT_EQ (w.patches.size (), 1u);
+  EXPECT_EQ (w.patches[0].members, before);
+}
