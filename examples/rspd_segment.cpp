@@ -592,6 +592,17 @@ run (const Options& o)
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,
        cloud.normals ? (stats.given_normals_replaced ? " (the file's were noise at this scale: estimated again)" : " (from the file)") : "",
        stats.split_seconds, stats.grow_merge_seconds, stats.output_seconds);
+  if (!stats.pass_seconds.empty ())
+  {
+    std::string passes;
+    char buffer[32];
+    for (const auto& pass : stats.pass_seconds)
+    {
+      std::snprintf (buffer, sizeof (buffer), " %.3f s", pass.second);
+      passes += (passes.empty () ? "" : ", ") + pass.first + buffer;
+    }
+    log ("grow/merge passes: %s", passes.c_str ());
+  }
   const pcl::rspd::NormalScaleStatistics& scales = seg.getNormalScaleStatistics ();
   if (!scales.samples_per_scale.empty ())
   {

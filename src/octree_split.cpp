@@ -240,10 +240,15 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
     for (std::uint32_t b = a + 1; b < count; ++b)
       if (touch (thick[a], thick[b]) && agree (thick[a], thick[b]))
         sets.join (a, b);
-  std::vector<PlanarPatch> patches;
+  // Groups are judged in parallel (a 1M cube's 15 groups of 6,000-50,000 samples took 0.12 s in
+  // turn, most of it the hinge fit) and kept in their order.
   const std::vector<std::vector<std::uint32_t>> groups = sets.groups ();
-  for (const auto& group : groups)
+  std::vector<PlanarPatch> judged (groups.size ());
+  std::vector<char> kept (groups.size (), 0);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
+  for (std::ptrdiff_t g = 0; g < static_cast<std::ptrdiff_t> (groups.size ()); ++g)
   {
+    const auto& group = groups[g];
     if (group.size () < 2)
       continue;
     std::vector<std::uint32_t> samples;
@@ -253,12 +258,16 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
     PlanarityResult r = robustPlanarityTest (points, samples, params);
     if (r.verdict != PlanarityVerdict::Planar || bentAtAnEdge (points, r.inliers, params))
       continue;
-    PlanarPatch patch;
+    PlanarPatch& patch = judged[g];
     patch.members = std::move (r.inliers);
     patch.first_index = patch.members.front ();
     patch.setEstimate (r.estimate);
-    patches.push_back (std::move (patch));
+    kept[g] = 1;
   }
+  std::vector<PlanarPatch> patches;
+  for (std::size_t g = 0; g < groups.size (); ++g)
+    if (kept[g])
+      patches.push_back (std::move (judged[g]));
   return patches;
 }
 } // namespace

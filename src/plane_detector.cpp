@@ -638,9 +638,25 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   const auto t1 = Clock::now ();
   st.split_seconds = std::chrono::duration<double> (t1 - t0).count ();
 
+  // Each pass's wall time from the end of the last (DetectorStatistics::pass_seconds).
+  auto last = t1;
+  const auto lap = [&] (const char* pass) {
+    const auto now = Clock::now ();
+    const double seconds = std::chrono::duration<double> (now - last).count ();
+    last = now;
+    for (auto& entry : st.pass_seconds)
+      if (entry.first == pass)
+      {
+        entry.second += seconds;
+        return;
+      }
+    st.pass_seconds.emplace_back (pass, seconds);
+  };
+
   // Grow and merge until no patch needs an update (Sec. 3.3-3.5).
   std::vector<std::uint8_t> flags (points.size (), 0); // see SampleFlag
   growMergeUntilStable (points, graph, params, patches, labels, flags, st);
+  lap ("grow-merge");
 
   if (!joined.empty ())
   {
@@ -652,6 +668,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       growMergeUntilStable (points, graph, params, patches, labels, flags, st);
   }
 
+  lap ("thick-cell groups");
   if (!outlier_seeds.empty () && !patches.empty ())
   {
     // Outlier seeds, tested again (departure, see DetectorParameters::retest_outlier_seeds) on
@@ -664,6 +681,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     for (const auto& seed : outlier_seeds)
       st.retested_seeds += seedLeftSamples (points, graph, params, seed.members, flat, patches, band, labels);
   }
+  lap ("outlier seeds");
   std::vector<PlanarPatch> joined_left; // the small-plane pass's groups of thick cells
   PointSet refitted;                    // trimmed normals of what growth left (left_normal_refit)
   bool trimmed_seeds = false;           // a seed found on them grows on them (trimmed_seed_growth)
@@ -839,6 +857,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     }
   }
 
+  lap ("small planes");
   if (params.release_far_members && !patches.empty ())
   {
     // Far members (departure, see DetectorParameters::release_far_members): released, offered to
@@ -852,6 +871,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     }
   }
 
+  lap ("far members");
   if (params.connected_parts && !patches.empty ())
   {
     // Connected parts (departure, see DetectorParameters::connected_parts).
@@ -859,9 +879,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     st.split_planes = splitDisconnectedPlanes (points, graph, params, patches, labels);
   }
 
+  lap ("connected parts");
   if (params.curved_plane_check)
     st.curved_planes = dropCurvedPlanes (points, params, patches);
 
+  lap ("curved check");
   if (params.bent_plane_split && !patches.empty ())
   {
     // Bent planes (departure, see DetectorParameters::bent_plane_split); after the curved check,
@@ -871,11 +893,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     st.bent_joined = joinSplitFaces (points, graph, params, patches, split);
   }
 
+  lap ("bent planes");
   if (params.step_split && !patches.empty ())
     // Step split (departure, see DetectorParameters::step_split): on planes already cut at their
     // edges, and before the passes that assign and move samples by each plane's noise band.
     st.steps_split = splitSteps (points, graph, params, patches);
 
+  lap ("step split");
   if (params.layer_merge && patches.size () >= 2)
   {
     // Layers of one plane's noise band (departure, see DetectorParameters::layer_merge); passes until
@@ -890,12 +914,14 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     }
   }
 
+  lap ("layer merge");
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {
     labels = labelSamples (points.size (), patches); // the small-plane pass may have dropped patches
     st.assigned = assignRemainingSamples (points, graph, params, patches, labels);
   }
 
+  lap ("last assignment");
   if (params.edge_sides && patches.size () >= 2)
   {
     labels = labelSamples (points.size (), patches);
@@ -908,6 +934,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                    patches.end ());
   }
 
+  lap ("edge sides");
   if (params.step_sides && patches.size () >= 2)
   {
     labels = labelSamples (points.size (), patches);
@@ -928,6 +955,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                    patches.end ());
   }
 
+  lap ("step sides");
   if (params.support_check && !patches.empty ())
   {
     // Plane support (departure, see DetectorParameters::support_check): last, so that it judges
@@ -941,7 +969,9 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   // between planes: the staircase at 15,000 points (seed 15) on PCL's k = 50 normals kept a plane of
   // one sample, what the edge and step sides left of a tread's second plane, cut from a plane bent
   // over the riser below. What is left of such a plane is no plane.
+  lap ("plane support");
   st.below_epsilon = dropBelowEpsilon (params, patches);
+  lap ("eps rule");
 
   st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();
 

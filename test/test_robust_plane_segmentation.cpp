@@ -16,6 +16,8 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
+#include <string>
 
 namespace
 {
@@ -550,6 +552,38 @@ TEST (RobustPlaneSegmentation, GivenNormalsAreUsed)
   EXPECT_EQ (seg.getValidIndices ().size (), 5999u);
   for (const auto& pi : ind)
     EXPECT_GT (pi.indices.size (), 1900u); // exact normals: nearly every sample joins
+}
+
+TEST (RobustPlaneSegmentation, PassTimesNameEachPassOnceAndSumToTheGrowMergeStage)
+{
+  auto cloud = boxCorner (3000, nullptr);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> ind;
+  seg.segment (c, ind);
+  ASSERT_EQ (ind.size (), 3u);
+  const auto& st = seg.getStatistics ();
+  ASSERT_FALSE (st.pass_seconds.empty ());
+  EXPECT_EQ (st.pass_seconds.front ().first, "grow-merge");
+  std::set<std::string> names;
+  double sum = 0.0;
+  for (const auto& pass : st.pass_seconds)
+  {
+    EXPECT_TRUE (names.insert (pass.first).second) << pass.first << " listed twice";
+    EXPECT_GE (pass.second, 0.0);
+    sum += pass.second;
+  }
+  for (const char* pass : {"small planes", "step split", "edge sides", "plane support"})
+    EXPECT_EQ (names.count (pass), 1u) << pass;
+  // The laps partition the stage: their sum is its time, up to the clock reads between them.
+  EXPECT_LE (sum, st.grow_merge_seconds + 1e-6);
+  EXPECT_GE (sum, 0.5 * st.grow_merge_seconds);
+  // A second run starts the list again.
+  const std::size_t passes = st.pass_seconds.size ();
+  seg.setInputCloud (cloud); // a new input: detected again, not cached
+  seg.segment (c, ind);
+  EXPECT_EQ (seg.getStatistics ().pass_seconds.size (), passes);
 }
 
 TEST (RobustPlaneSegmentation, LeftNormalRefitIsOnForGivenNormalsOffForOwnAndSwitchable)

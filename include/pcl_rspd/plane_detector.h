@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace pcl
@@ -494,7 +496,10 @@ struct DetectorStatistics
   bool given_normals_replaced = false; ///< the caller's normals were noise at the graph's scale and were estimated again (RobustPlaneSegmentation::setGivenNormalCheck)
   std::size_t depth_levels = 0;      ///< distinct depths of a quantized camera cloud that were dithered (RobustPlaneSegmentation::setDepthLevelDither); 0 = none
   double split_seconds = 0.0;        ///< split phase
-  double grow_merge_seconds = 0.0;   ///< grow-merge iterations
+  double grow_merge_seconds = 0.0;   ///< grow-merge iterations and every pass after them
+  /** Wall time of each pass within grow_merge_seconds, in the order first run ("grow-merge",
+    * "small planes", "step split", ...; a pass run more than once is summed): where the time goes. */
+  std::vector<std::pair<std::string, double>> pass_seconds;
   double output_seconds = 0.0;       ///< plane outputs: indices, labels, centroids, hulls, rectangles
 };
 
