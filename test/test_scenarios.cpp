@@ -584,6 +584,8 @@ TEST (Scenario, TankAndPipeFacetsUnderHeavyNoiseNeedTheNormalsTurn)
   // The industrial scene at σ = 3 cm (seed 3): noise is most of a facet's MND, so a tank facet
   // (quadric share 0.05, half-bend 0.12 rad against MND 0.28) and two pipe facets (MND 0.64-0.66)
   // pass the quadric's fixed bounds; their normals turn across them by more than half MND, smoothly.
+  // Without the turn, a facet is a false plane (measured: two before groups of noisy seeds smaller
+  // than ε could seed, one since).
   pcl::rspd::SceneOptions options;
   options.noise = 0.03;
   options.seed = 3;
@@ -593,7 +595,7 @@ TEST (Scenario, TankAndPipeFacetsUnderHeavyNoiseNeedTheNormalsTurn)
                                            EXPECT_TRUE (s.getCurvedNormalTurn ());
                                            s.setCurvedNormalTurn (false);
                                          });
-  EXPECT_GE (without.score.false_planes, 2);
+  EXPECT_GE (without.score.false_planes, 1);
   EXPECT_GT (without.curved_claimed, 0.02);
   EXPECT_EQ (with.score.false_planes, 0);
   EXPECT_LE (with.curved_claimed, 0.02);
@@ -709,6 +711,25 @@ TEST (Scenario, LoneNoisySeedOfARoughBoxSideSeedsItsPlane)
   EXPECT_GT (lone.score.f1, grouped.score.f1);
   EXPECT_EQ (lone.score.false_planes, 0);
   EXPECT_GT (lone.stats.small_noisy_groups, grouped.stats.small_noisy_groups);
+}
+
+TEST (Scenario, CabinetTopAmidOutliersIsSeededByASmallGroupOfNoisySeeds)
+{
+  // The room with 10 % outliers (seed 3, ε = 200): the cabinet top (479 samples) has two noisy seeds
+  // in the small-plane pass, 117 and 68 samples, that join into a group of 185. Held to ε, the group
+  // seeded nothing and the top was missed (11 of 12, F1 0.9930; measured); judged as a lone seed is,
+  // it seeds the top, which grows to ε (12 of 12, 0.9958), with no false plane.
+  pcl::rspd::SceneOptions o;
+  o.outlier_ratio = 0.1;
+  o.seed = 3;
+  const Detection small = detectScene ("room", o);
+  const Detection held = detectScene ("room", o, true, pcl::rspd::NormalScale::Automatic,
+                                      [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setNoisyLoneSeeds (false); });
+  EXPECT_EQ (small.score.found, 12);
+  EXPECT_EQ (small.score.false_planes, 0);
+  EXPECT_GT (small.score.f1, 0.995);
+  EXPECT_LE (held.score.found, 11);
+  EXPECT_GT (small.score.f1, held.score.f1);
 }
 
 TEST (Scenario, RoughBoxesEachRougherThanTheLastClimbTheNoiseLadder)

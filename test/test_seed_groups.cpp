@@ -61,6 +61,7 @@ parameters ()
 {
   DetectorParameters p;
   p.min_patch_size = 300;
+  p.small_cell_size = 20; // the pass's cell size, at which a group below ε is judged
   return p;
 }
 
@@ -111,12 +112,22 @@ TEST (SeedGroups, GroupFarNoisierOrThickerThanThePlanesFoundSeedsNothing)
   EXPECT_EQ (joinNoisySeeds (s.set, s.graph, wide, s.seeds, 0.2 * maxMnd (s.seeds), 0.03).size (), 1u);
 }
 
-TEST (SeedGroups, GroupOfFewerThanEpsilonSamplesSeedsNothing)
+TEST (SeedGroups, GroupOfFewerThanEpsilonSamplesSeedsOnlyAsALoneSeedWould)
 {
+  // ε above what the face holds: the group is judged at the pass's cell size, as a lone seed is (its
+  // grown plane must reach ε); without lone seeds it seeds nothing.
   const Scene s = makeScene (false);
   DetectorParameters big = parameters ();
   big.min_patch_size = 2000; // more than the face holds
-  EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, big, s.seeds, maxMnd (s.seeds), 0.03).empty ());
+  const std::vector<PlanarPatch> out = joinNoisySeeds (s.set, s.graph, big, s.seeds, 0.8 * maxMnd (s.seeds), 0.03);
+  ASSERT_EQ (out.size (), 1u);
+  EXPECT_GE (out[0].members.size (), 1200u);
+  EXPECT_GT (std::abs (out[0].normal.z ()), std::cos (2.0 * kDegree));
+  big.noisy_lone_seeds = false;
+  EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, big, s.seeds, 0.8 * maxMnd (s.seeds), 0.03).empty ());
+  // Still on the group's terms: far noisier than the planes found, it seeds nothing.
+  big.noisy_lone_seeds = true;
+  EXPECT_TRUE (joinNoisySeeds (s.set, s.graph, big, s.seeds, 0.2 * maxMnd (s.seeds), 0.03).empty ());
 }
 
 TEST (SeedGroups, LoneSeedSeedsAloneOnTheGroupsTermsButEpsilon)

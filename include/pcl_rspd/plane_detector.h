@@ -129,6 +129,9 @@ struct DetectorParameters
     * are few and apart has no group: the boxes with 15 % outliers at 300,000 points (ε = 300) on PCL's
     * k = 50 normals, the σ = 3 cm box's two sides, 2,096 samples each, had one seed of 207 samples and
     * three of 67-177 that did not agree (the thin one's band held too few of the others' samples).
+    * A group of fewer than ε samples is judged the same way: T1-T3 at the pass's cell size
+    * (small_cell_size), ε asked of its grown plane (the room with 10 % outliers: the cabinet top's
+    * two seeds, 117 and 68 samples, against ε = 200).
     * false = a seed too noisy alone seeds only in a group of ε samples. */
   bool noisy_lone_seeds = true;
   /** \brief Departure (noise ladder, part of noisy_seed_groups): once noisy seeds seeded planes

@@ -695,7 +695,8 @@ public:
   /** \brief Lone noisy seeds (default true; false = a noisy seed seeds only in a group of ε samples):
     * with the groups of noisy small seeds on, a noisy seed that joins no other seeds a plane alone if
     * it is within the groups' ratio of the planes found, flat, and no edge band or noise-band layer;
-    * its grown plane must hold ε samples. See pcl::rspd::DetectorParameters::noisy_lone_seeds. */
+    * its grown plane must hold ε samples. A group of fewer than ε samples is judged the same way.
+    * See pcl::rspd::DetectorParameters::noisy_lone_seeds. */
   void
   setNoisyLoneSeeds (bool enable);
   /** \brief Whether a lone noisy small seed may seed a plane. */

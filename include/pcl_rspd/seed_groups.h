@@ -27,7 +27,10 @@ namespace rspd
   * terms (it passed T1-T3 as a cell of the pass; ε is asked of its grown plane): a rough face whose
   * few seeds lie apart or disagree has no group (the boxes with 15 % outliers on PCL's k = 50
   * normals: the roughest box's two sides, one seed of 207 samples against ε = 300, three of 67-177
-  * whose bands disagree).
+  * whose bands disagree). A group of fewer than ε samples is then judged as a lone seed is: T1-T3
+  * at the pass's cell size (DetectorParameters::small_cell_size), ε asked of its grown plane (the
+  * room with 10 % outliers: the cabinet top, 479 samples, had two seeds of 117 and 68 against
+  * ε = 200, and was missed while the group was held to ε).
   *
   * Why: the first split seeds a plane only where one octree cell holds ε of its samples within T1's
   * angle. A rough face that two cells of the grid share, each cell also holding a piece of the next
