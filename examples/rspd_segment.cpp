@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -104,6 +104,10 @@ const char* const kHelp =
     "                   neighbours' spacing from the rest of the plane or more than 2 ahead of\n"
     "                   all of it, and in no other plane's noise band, leaves it; repeated\n"
     "                   while that exposes more (default on; off = the paper)\n"
+    "  --final-refit on|off  once the planes' points are settled, each plane becomes the\n"
+    "                   least-squares plane of its points within 2.5 robust sigma before the\n"
+    "                   last passes, and again for the planes written (default on; off = the\n"
+    "                   paper's robust estimate)\n"
     "  --connected-parts on|off  a plane whose points that pass its inlier test form separate\n"
     "                   parts (no neighbour link between them) is split into them (default on;\n"
     "                   off = the paper)\n"
@@ -198,6 +202,7 @@ struct Options
   bool noisy_ladder = true;
   bool thick_follow = true;
   bool support = true;
+  bool final_refit = true;
   LeftNormals left_normals = LeftNormals::Auto;
   bool connected_parts = true;
   bool bent_split = true;
@@ -339,6 +344,8 @@ parseArguments (int argc, char** argv)
     }
     else if (arg == "--support")
       o.support = option.choice ("on", "off");
+    else if (arg == "--final-refit")
+      o.final_refit = option.choice ("on", "off");
     else if (arg == "--connected-parts")
       o.connected_parts = option.choice ("on", "off");
     else if (arg == "--bent-split")
@@ -543,6 +550,7 @@ run (const Options& o)
   seg.setNoisyGroupLadder (o.noisy_ladder);
   seg.setThickCellsFollowNoisySeeds (o.thick_follow);
   seg.setSupportCheck (o.support);
+  seg.setFinalRefit (o.final_refit);
   seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
   seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);
   seg.setConnectedParts (o.connected_parts);

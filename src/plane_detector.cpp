@@ -13,6 +13,7 @@
 #include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/plane_curvature.h>
 #include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/plane_refit.h>
 #include <pcl_rspd/plane_support.h>
 #include <pcl_rspd/robust_normals.h>
 #include <pcl_rspd/robust_statistics.h>
@@ -915,6 +916,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   }
 
   lap ("layer merge");
+  // Final refit (departure, see DetectorParameters::final_refit): the passes below judge samples by
+  // their distance to each plane, which its least-squares plane gives better than its robust estimate.
+  if (params.final_refit)
+    refitPlanes (points, params.num_threads, patches);
+  lap ("final refit");
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {
     labels = labelSamples (points.size (), patches); // the small-plane pass may have dropped patches
@@ -972,6 +978,9 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   lap ("plane support");
   st.below_epsilon = dropBelowEpsilon (params, patches);
   lap ("eps rule");
+  if (params.final_refit)
+    refitPlanes (points, params.num_threads, patches); // on the final members: the planes returned
+  lap ("final refit");
 
   st.grow_merge_seconds = std::chrono::duration<double> (Clock::now () - t1).count ();
 

@@ -193,11 +193,13 @@ TEST (Scenario, StaircaseEdgeSamplesKeepToTheirSide)
 {
   // Within noise of a step's nose, growth gives a riser sample pushed out of the step to the tread
   // (or the reverse), which puts the tread in voxels it never enters. The edge-side rule moves
-  // them: F1 0.978 -> 0.989, precision 0.980 -> 0.997 measured.
+  // them: F1 0.978 -> 0.989, precision 0.980 -> 0.997 measured (0.983 -> 0.993 and 0.981 -> 0.997
+  // since the final refit).
   const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setEdgeSides (false); };
   const Detection without = detectScene ("staircase", {}, true, pcl::rspd::NormalScale::Automatic, off);
   const Detection with = detectScene ("staircase");
-  EXPECT_LT (without.score.f1, 0.982);
+  EXPECT_LT (without.score.f1, with.score.f1 - 0.005);
+  EXPECT_LT (without.score.precision, 0.985);
   EXPECT_GE (with.score.f1, 0.986);
   EXPECT_GE (with.score.precision, 0.995);
   EXPECT_EQ (with.score.found, 30);
@@ -509,7 +511,9 @@ TEST (Scenario, SparseStaircaseAndYardNeedTheAutomaticK)
   // 30,000 samples: 4 of 6 with k = 50 and a fixed bend share, 6 with the automatic k (measured);
   // tested against noise (setBendNoiseTest), k = 50 finds 6 too, F1 0.979 against 0.987. The small-plane pass's
   // second split on trimmed normals (setLeftNormalRefit) gains a little at k = 50 (staircase
-  // 0.940 -> 0.945), far from the automatic k.
+  // 0.940 -> 0.945), far from the automatic k. Since the final refit, which takes the planes off
+  // the bent normals' median, k = 50 gives 0.988 with one fragment, the automatic k 0.991 and none
+  // (the refitted k = 50 run 0.989; measured).
   pcl::rspd::SceneOptions o;
   o.num_points = 30000;
   pcl::rspd::SceneOptions o20 = o;
@@ -517,7 +521,8 @@ TEST (Scenario, SparseStaircaseAndYardNeedTheAutomaticK)
   const auto paper_k = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setNumberOfNeighbours (50); };
   const Detection fixed = detectScene ("staircase", o20, true, pcl::rspd::NormalScale::Automatic, paper_k);
   const Detection automatic = detectScene ("staircase", o20);
-  EXPECT_LT (fixed.score.f1, 0.96);
+  EXPECT_LT (fixed.score.f1, automatic.score.f1);
+  EXPECT_GT (fixed.score.fragments, automatic.score.fragments);
   EXPECT_EQ (automatic.score.found, 30);
   EXPECT_GE (automatic.score.f1, 0.985);
   const auto paper_k_refit = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
@@ -713,6 +718,28 @@ TEST (Scenario, LoneNoisySeedOfARoughBoxSideSeedsItsPlane)
   EXPECT_GT (lone.stats.small_noisy_groups, grouped.stats.small_noisy_groups);
 }
 
+TEST (Scenario, NoisyStaircaseEdgesNeedTheFinalRefit)
+{
+  // The staircase at σ = 1 cm (seed 40): on the robust estimates, samples within 1 cm of a riser's
+  // edges lay beyond the edge line of both planes there and were released (F1 0.9737, recall 0.952;
+  // measured); on the least-squares planes they are kept (0.9828, recall 0.970; the true planes with
+  // nearest-plane assignment give 0.985).
+  pcl::rspd::SceneOptions o;
+  o.noise = 0.01;
+  o.seed = 40;
+  const Detection refit = detectScene ("staircase", o);
+  const Detection robust = detectScene ("staircase", o, true, pcl::rspd::NormalScale::Automatic,
+                                        [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                                          EXPECT_TRUE (s.getFinalRefit ());
+                                          s.setFinalRefit (false);
+                                          EXPECT_FALSE (s.getFinalRefit ());
+                                        });
+  EXPECT_EQ (refit.score.found, 30);
+  EXPECT_EQ (refit.score.false_planes, 0);
+  EXPECT_GT (refit.score.f1, robust.score.f1 + 0.005);
+  EXPECT_GT (refit.score.recall, robust.score.recall + 0.01);
+}
+
 TEST (Scenario, CabinetTopAmidOutliersIsSeededByASmallGroupOfNoisySeeds)
 {
   // The room with 10 % outliers (seed 3, ε = 200): the cabinet top (479 samples) has two noisy seeds
@@ -846,12 +873,22 @@ TEST (Scenario, NoPlaneEndsWithFewerThanEpsilonSamples)
 {
   // The staircase at 15,000 points (seed 15, ε = 15) on PCL's k = 50 normals: a plane bent over a
   // riser and a tread was cut at the edge, and the edge and step sides then moved all but one of its
-  // tread samples to the tread's other plane: a plane of one sample (measured). It is dropped.
+  // tread samples to the tread's other plane: a plane of one sample (measured). It is dropped. With
+  // the final refit the edge sides no longer leave that plane so small; without it they still do.
   pcl::rspd::SceneOptions o;
   o.num_points = 15000;
   o.seed = 15;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
-  const Detection d = detectOnPclNormals (scene, pclNormals (scene.cloud));
+  const Detection refit = detectOnPclNormals (scene, pclNormals (scene.cloud));
+  std::map<std::uint32_t, std::size_t> refit_size;
+  for (const auto l : refit.labels)
+    if (l != 0)
+      ++refit_size[l];
+  for (const auto& s : refit_size)
+    EXPECT_GE (s.second, 15u) << "plane " << s.first;
+  const Detection d = detectOnPclNormals (scene, pclNormals (scene.cloud), [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    s.setFinalRefit (false);
+  });
   std::map<std::uint32_t, std::size_t> size;
   for (const auto l : d.labels)
     if (l != 0)
@@ -1071,7 +1108,23 @@ TEST (Scenario, FacadeOnPclNormalsGetsNoSlabOfOutliersFromTrimmedNormals)
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("facade", o);
   const Detection d = detectOnPclNormals (scene, pclNormals (scene.cloud));
   EXPECT_EQ (d.score.found, 16);
-  EXPECT_EQ (d.score.false_planes, 0);
+  // No plane made mostly of outliers. (A strip across a window's 20 cm step, wall and window
+  // samples, is scored a fragment or a false plane depending on which side holds more of its
+  // voxels: a fragment before the final refit, a false plane after; measured.)
+  std::map<std::uint32_t, std::pair<std::size_t, std::size_t>> outliers_of; // plane -> (outliers, members)
+  for (std::size_t i = 0; i < d.labels.size (); ++i)
+    if (d.labels[i] != 0)
+    {
+      auto& c = outliers_of[d.labels[i]];
+      c.first += scene.labels[i] == 0;
+      ++c.second;
+    }
+  for (const auto& [plane, c] : outliers_of)
+    EXPECT_LT (2 * c.first, c.second) << "plane " << plane << ": " << c.first << " outliers of " << c.second;
+  EXPECT_LE (d.score.false_planes, 1);
+  // Without the bound on a trimmed-normal seed's MDP the slab's outliers still end in planes: the
+  // precision falls from 0.986 to 0.981 (measured).
+  EXPECT_GE (d.score.precision, 0.984);
   EXPECT_GT (d.stats.left_refitted, 0u);
 }
 

@@ -141,6 +141,11 @@ struct RobustPlane
   *    by more than both noise bands goes to it when it lies within its band and it holds more of the
   *    sample's neighbours, until none moves (a window recessed 20 cm behind a wall scanned at
   *    σ = 5 cm: distance cannot tell where the bands overlap, the neighbours can);
+  *  - final refit (setFinalRefit(false) for the paper's estimate): once the planes' samples are
+  *    settled, each plane's centre and normal become the least-squares plane of its members within
+  *    2.5 robust sigmas, before the passes below judge distances to it, and again on the final
+  *    members for the planes returned (the robust estimate is off by much of the noise at a plane's
+  *    rims: a noisy staircase's edge samples lay beyond both planes' edge lines);
   *  - plane support (setSupportCheck(false) for the paper): last, a member on or beyond its plane's
   *    rim whose in-plane gap to the rest of the plane is more than 6 times its neighbours' gaps, or
   *    which lies ahead of all its plane's neighbours by more than 2 of their gaps (or with under a
@@ -554,6 +559,17 @@ public:
   bool
   getSupportCheck () const { return params_.support_check; }
 
+  /** \brief Final refit (default true; false = the paper's robust estimate throughout): once the
+    * planes' samples are settled, each plane's centre and normal become the least-squares plane of
+    * its members within 2.5 robust sigmas, before the last assignment, the edge and step sides and
+    * the plane support; and again on the final members, for the coefficients returned. See
+    * pcl::rspd::refitPlanes and pcl::rspd::DetectorParameters::final_refit. */
+  void
+  setFinalRefit (bool enable);
+  /** \brief Whether the planes are refitted by least squares before the last passes. */
+  bool
+  getFinalRefit () const { return params_.final_refit; }
+
   /** \brief M4, coplanar groups (default true; false = the paper's transitive M1-M3): a group joins
     * another only if most of its samples lie in the distance band of the plane the merged group
     * keeps. See pcl::rspd::DetectorParameters::coplanar_merge. */
@@ -822,7 +838,9 @@ public:
   /** \brief Ignored: no random sampling (logged at PCL_DEBUG). */
   void
   setProbability (double probability);
-  /** \brief Ignored: coefficients always come from the robust estimate (logged at PCL_DEBUG). */
+  /** \brief Ignored (logged at PCL_DEBUG): with the final refit (setFinalRefit, the default) the
+    * coefficients are already each plane's least-squares plane of its members; without it they are
+    * the paper's robust estimate. */
   void
   setOptimizeCoefficients (bool optimize);
   ///@}

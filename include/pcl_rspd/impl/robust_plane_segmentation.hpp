@@ -418,6 +418,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSupportCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setFinalRefit (bool enable)
+{
+  params_.final_refit = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 {
   params_.coplanar_merge = enable;
@@ -665,7 +672,8 @@ RobustPlaneSegmentation<PointT, NormalT>::setProbability (double)
 template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setOptimizeCoefficients (bool)
 {
-  PCL_DEBUG ("[pcl::%s::setOptimizeCoefficients] ignored: coefficients come from the robust estimate\n",
+  PCL_DEBUG ("[pcl::%s::setOptimizeCoefficients] ignored: coefficients are least-squares planes of the "
+             "inliers (setFinalRefit) or the robust estimate\n",
              getClassName ().c_str ());
 }
 
