@@ -21,8 +21,9 @@ namespace rspd
 constexpr double kRefitTrimSigmas = 2.5;
 
 /** \brief Rounds of the refit: the least-squares plane of all members, then of those within
-  * kRefitTrimSigmas of the last plane, this many times. Two settle: a third moves no plane of the
-  * project's scenes by more than 10⁻⁶ of its noise (measured). */
+  * kRefitTrimSigmas of the last plane, this many times. Two settle: a third (measured with
+  * `rspd_segment` on 17 clouds) left the generated scenes' labels identical or 2 samples apart, and
+  * moved F1 by at most 0.0002 (synpeb_pc01 0.92855 → 0.92850, cgal_building 0.86756 → 0.86742). */
 constexpr int kRefitRounds = 2;
 
 /** \brief Final refit (departure, DetectorParameters::final_refit): set each plane's C and N to the
