@@ -3,7 +3,7 @@
  * normals, each in a process of its own, and compare time, peak memory and the paper's scores.
  * SPDX-License-Identifier: BSD-3-Clause
  *
- *   rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--methods rspd,sac,rg] [--json]
+ *   rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--phases N] [--methods rspd,sac,rg] [--json]
  *   rspd_compare --scene NAME [-n N] [--seed S] [...same options]
  *
  * Methods:
@@ -68,7 +68,8 @@ parseInteger (const std::string& s, long long lo, long long hi, long long& value
 }
 
 const char* const kUsage =
-    "usage: rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--methods rspd,sac,rg] [--json]\n"
+    "usage: rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--phases N] [--methods rspd,sac,rg]\n"
+    "                    [--json]\n"
     "       rspd_compare --scene NAME [-n N] [--seed S] [options]";
 
 const char* const kHelp =
@@ -83,6 +84,10 @@ const char* const kHelp =
     "  -k N             neighbours for the shared normal estimation (default 50)\n"
     "  --threads N      OpenMP threads for the normals and rspd (default: OpenMP's default)\n"
     "  --voxel F        evaluation voxel edge as a fraction of the largest extent (default 0.01)\n"
+    "  --phases N       also score every method on N grids (1..1000), the paper's and N - 1 shifted\n"
+    "                   by fixed fractions of a voxel (as rspd_evaluate --phases): F1's median and\n"
+    "                   lowest over them, since where bands or rims lie near voxel boundaries F1\n"
+    "                   moves with the grid alone\n"
     "  --methods LIST   comma-separated subset of rspd,sac,rg, run in that order (default all)\n"
     "  --json           print one JSON object instead of the table\n"
     "\n"
@@ -105,6 +110,7 @@ struct Options
   int k = 50;
   int threads = 0;              // 0: OpenMP's default
   double voxel = 0.01;
+  long long phases = 0;         // 0: the paper's grid only
   std::vector<std::string> methods{"rspd", "sac", "rg"};
   bool json = false;
   bool help = false;
@@ -189,6 +195,12 @@ parseArguments (int argc, char** argv)
       if (v.empty () || *end != '\0' || errno == ERANGE || !std::isfinite (o.voxel) || !(o.voxel > 0.0) ||
           o.voxel > 1.0)
         throw UsageError{"--voxel needs a number in (0, 1] (got '" + v + "')"};
+    }
+    else if (arg == "--phases")
+    {
+      const std::string v = value ();
+      if (!parseInteger (v, 1, 1000, o.phases))
+        throw UsageError{"--phases needs an integer from 1 to 1000 (got '" + v + "')"};
     }
     else if (arg == "--methods")
     {
@@ -281,6 +293,7 @@ struct MethodResult
   double rms = 0.0;                    ///< RMS distance of plane points to their own plane
   bool evaluated = false;
   pcl::rspd::EvaluationResult scores;
+  pcl::rspd::PhaseScores phase_scores; ///< phases == 0 unless --phases
 };
 
 /** \brief Seconds since \a start. */
@@ -626,6 +639,7 @@ struct Summary
   double normals_seconds = 0.0;
   double normals_peak_mb = 0.0;
   double voxel = 0.01;
+  std::size_t phases = 0;
 };
 
 void
@@ -654,11 +668,16 @@ printText (const Summary& s, const Context& c, const std::vector<MethodResult>& 
   std::printf ("parameters: labels 0 = none, 1..K by decreasing size; time = detection wall time in the method's "
                "own process; peak = that process's max RSS (wait4), start = its RSS before the detection "
                "(inherited cloud and normals)%s\n",
-               s.has_truth ? format ("; scores: voxel %g of the largest extent (Sec. 4.2)", s.voxel).c_str () : "");
+               s.has_truth ? format ("; scores: voxel %g of the largest extent (Sec. 4.2)%s", s.voxel,
+                                     s.phases > 0 ? format (", F1 median and min over %zu grid phases", s.phases).c_str ()
+                                                  : "").c_str ()
+                           : "");
 
   std::printf ("%-6s %7s %9s %8s %8s %10s", "method", "planes", "time (s)", "peak MB", "start MB", "rms");
   if (s.has_truth)
     std::printf (" %9s %7s %7s %7s %9s %5s", "precision", "recall", "F1", "found", "fragments", "false");
+  if (s.has_truth && s.phases > 0)
+    std::printf (" %9s %7s", "F1 median", "F1 min");
   std::printf ("  note\n");
   for (const MethodResult& m : results)
   {
@@ -673,6 +692,8 @@ printText (const Summary& s, const Context& c, const std::vector<MethodResult>& 
       std::printf (" %9.4f %7.4f %7.4f %7s %9d %5d", m.scores.precision, m.scores.recall, m.scores.f1,
                    format ("%d/%d", m.scores.found, m.scores.planes).c_str (), m.scores.fragments,
                    m.scores.false_planes);
+    if (m.evaluated && s.phases > 0)
+      std::printf (" %9.4f %7.4f", m.phase_scores.f1_median, m.phase_scores.f1_min);
     std::printf ("  %s\n", m.detection.note.c_str ());
   }
 }
@@ -712,6 +733,11 @@ printJson (const Summary& s, const Context& c, const std::vector<MethodResult>& 
                    "\"detected\": %d, \"fragments\": %d, \"false_planes\": %d",
                    m.scores.precision, m.scores.recall, m.scores.f1, m.scores.found, m.scores.planes,
                    m.scores.detected, m.scores.fragments, m.scores.false_planes);
+    if (m.evaluated && s.phases > 0)
+      j += format (", \"phases\": %zu, \"f1_phase_median\": %.10g, \"f1_phase_min\": %.10g, \"f1_phase_max\": %.10g, "
+                   "\"found_phase_min\": %d",
+                   m.phase_scores.phases, m.phase_scores.f1_median, m.phase_scores.f1_min, m.phase_scores.f1_max,
+                   m.phase_scores.found_min);
     j += ", \"note\": " + jsonString (m.detection.note) + "}";
   }
   j += "]}\n";
@@ -743,6 +769,7 @@ run (const Options& o)
   Summary s;
   s.k = o.k;
   s.voxel = o.voxel;
+  s.phases = static_cast<std::size_t> (o.phases);
 
   // --- input and truth
   rspd_tools::LoadedCloud loaded;
@@ -823,6 +850,8 @@ run (const Options& o)
     if (s.has_truth)
     {
       m.scores = pcl::rspd::evaluatePlaneDetection (*c.cloud, truth, m.detection.labels, o.voxel);
+      if (s.phases > 0)
+        m.phase_scores = pcl::rspd::evaluateOverGridPhases (*c.cloud, truth, m.detection.labels, o.voxel, s.phases);
       m.evaluated = true;
     }
   }

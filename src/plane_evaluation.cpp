@@ -10,7 +10,8 @@
  *  2. Regularization. The voxel edge is voxel_ratio times the largest extent (max over x, y, z of
  *     max - min) of the finite points; the grid starts at their minimum corner, so a point falls in
  *     voxel floor ((p - min) / edge) per axis (clamped to the grid, so a point at the maximum stays in
- *     the last cell). If all finite points coincide, there is one voxel. Voxels are identified by a
+ *     the last cell). With a grid phase f (per axis, in [0, 1)) the grid starts f edges below the
+ *     minimum corner instead: voxel floor ((p - min) / edge + f), the edge unchanged. If all finite points coincide, there is one voxel. Voxels are identified by a
  *     64-bit linear key (or, for absurdly fine grids whose cell count overflows 64 bits, by the
  *     integer triple), then renumbered densely.
  *  3. Membership. A voxel belongs to every plane (truth or detected) that has at least one of its
@@ -101,7 +102,7 @@ assignDenseIds (const std::vector<Key>& keys, std::vector<std::uint32_t>& ids)
 /** \brief Voxel id of every point (kNoVoxel for non-finite ones); returns the number of voxels. */
 std::uint32_t
 voxelize (const pcl::PointCloud<pcl::PointXYZ>& cloud, double voxel_ratio,
-          std::vector<std::uint32_t>& voxel_of)
+          const std::array<double, 3>& phase, std::vector<std::uint32_t>& voxel_of)
 {
   voxel_of.assign (cloud.size (), kNoVoxel);
   Eigen::Array3d lo = Eigen::Array3d::Constant (std::numeric_limits<double>::infinity ());
@@ -128,9 +129,9 @@ voxelize (const pcl::PointCloud<pcl::PointXYZ>& cloud, double voxel_ratio,
   // Cells per axis; a point exactly at the maximum would otherwise land one past the grid.
   std::array<double, 3> cells;
   for (int a = 0; a < 3; ++a)
-    cells[a] = std::floor (range[a] / edge) + 1.0;
+    cells[a] = std::floor (range[a] / edge + phase[a]) + 1.0;
   auto cell = [&] (double v, int a) -> std::int64_t {
-    const double c = std::floor ((v - lo[a]) / edge);
+    const double c = std::floor ((v - lo[a]) / edge + phase[a]);
     return static_cast<std::int64_t> (std::min (std::max (c, 0.0), cells[a] - 1.0));
   };
 
@@ -294,18 +295,21 @@ EvaluationResult
 evaluatePlaneDetection (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                         const std::vector<std::uint32_t>& truth,
                         const std::vector<std::uint32_t>& detected,
-                        double voxel_ratio)
+                        double voxel_ratio, const std::array<double, 3>& grid_phase)
 {
   if (truth.size () != cloud.size () || detected.size () != cloud.size ())
     throw std::invalid_argument ("evaluatePlaneDetection: label count differs from point count");
   if (!(voxel_ratio > 0.0))
     throw std::invalid_argument ("evaluatePlaneDetection: voxel_ratio must be positive");
+  for (const double f : grid_phase)
+    if (!(f >= 0.0 && f < 1.0))
+      throw std::invalid_argument ("evaluatePlaneDetection: grid phase must lie in [0, 1)");
   // Voxel and point ids are 32-bit to halve the memory at 10M points.
   if (cloud.size () >= static_cast<std::size_t> (kNoVoxel))
     throw std::invalid_argument ("evaluatePlaneDetection: too many points");
 
   std::vector<std::uint32_t> voxel_of;
-  const std::uint32_t voxel_count = voxelize (cloud, voxel_ratio, voxel_of);
+  const std::uint32_t voxel_count = voxelize (cloud, voxel_ratio, grid_phase, voxel_of);
   const std::vector<Plane> truth_planes = buildPlanes (cloud, truth, voxel_of);
   const std::vector<Plane> detected_planes = buildPlanes (cloud, detected, voxel_of);
 
@@ -409,6 +413,49 @@ evaluatePlaneDetection (const pcl::PointCloud<pcl::PointXYZ>& cloud,
   const double sum = result.precision + result.recall;
   result.f1 = sum > 0.0 ? 2.0 * result.precision * result.recall / sum : 0.0;
   return result;
+}
+
+std::array<double, 3>
+gridPhase (std::size_t index)
+{
+  // R3 sequence: g is the real root of g^3 = g + 1; the multiples of (1/g, 1/g^2, 1/g^3) modulo 1
+  // fill the unit cube more evenly than random draws, for any number of phases.
+  const double g = 1.32471795724474602596;
+  std::array<double, 3> phase;
+  double step = 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    step /= g;
+    const double v = static_cast<double> (index) * step;
+    phase[a] = v - std::floor (v);
+    if (!(phase[a] < 1.0)) // rounding at huge indices
+      phase[a] = 0.0;
+  }
+  return phase;
+}
+
+PhaseScores
+evaluateOverGridPhases (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                        const std::vector<std::uint32_t>& truth,
+                        const std::vector<std::uint32_t>& detected,
+                        double voxel_ratio, std::size_t phases)
+{
+  if (phases == 0)
+    throw std::invalid_argument ("evaluateOverGridPhases: at least one phase is needed");
+  PhaseScores scores;
+  scores.phases = phases;
+  std::vector<double> f1;
+  f1.reserve (phases);
+  for (std::size_t i = 0; i < phases; ++i)
+  {
+    const EvaluationResult r = evaluatePlaneDetection (cloud, truth, detected, voxel_ratio, gridPhase (i));
+    f1.push_back (r.f1);
+    scores.found_min = i == 0 ? r.found : std::min (scores.found_min, r.found);
+  }
+  scores.f1_min = *std::min_element (f1.begin (), f1.end ());
+  scores.f1_max = *std::max_element (f1.begin (), f1.end ());
+  scores.f1_median = median (f1);
+  return scores;
 }
 
 } // namespace rspd

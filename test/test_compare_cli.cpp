@@ -110,6 +110,18 @@ TEST (CompareCli, JsonHasMethods)
   EXPECT_NE (r.out.find ("\"peak_mb\""), std::string::npos);
 }
 
+TEST (CompareCli, PhasesAddTheMedianAndLowestF1)
+{
+  REQUIRE_COMPARE_BINARY ();
+  const RunResult r = runCompare ({"--scene", "cube", "-n", "5000", "--methods", "rspd", "--phases", "4"});
+  ASSERT_EQ (r.status, 0) << r.err;
+  EXPECT_NE (r.out.find ("F1 median  F1 min"), std::string::npos) << r.out;
+  EXPECT_NE (r.out.find ("F1 median and min over 4 grid phases"), std::string::npos) << r.out;
+  const RunResult j = runCompare ({"--scene", "cube", "-n", "5000", "--methods", "rspd", "--phases", "4", "--json"});
+  ASSERT_EQ (j.status, 0) << j.err;
+  EXPECT_NE (j.out.find ("\"phases\": 4, \"f1_phase_median\""), std::string::npos) << j.out;
+}
+
 TEST (CompareCli, MethodSubsetInOrder)
 {
   REQUIRE_COMPARE_BINARY ();
@@ -195,6 +207,7 @@ TEST (CompareCli, UsageErrorsExitTwo)
       {"a.pcd", "--methods", "rg,rg"},               // duplicate method
       {"a.pcd", "-k", "zero"},                       // bad number
       {"a.pcd", "--voxel", "-1"},                    // bad voxel
+      {"a.pcd", "--phases", "0"},                    // no grid
       {"a.pcd", "-n", "100"},                        // -n without --scene
       {"a.pcd", "b.gt", "c.gt"},                     // too many files
       {"a.pcd", "--frobnicate"},                     // unknown option

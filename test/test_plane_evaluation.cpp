@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -28,6 +29,8 @@
 
 using pcl::rspd::EvaluationResult;
 using pcl::rspd::evaluatePlaneDetection;
+using pcl::rspd::evaluateOverGridPhases;
+using pcl::rspd::gridPhase;
 
 namespace
 {
@@ -280,6 +283,91 @@ TEST (PlaneEvaluation, DegenerateDetections)
   }
 }
 
+TEST (PlaneEvaluation, GridPhaseShiftsTheVoxelBoundaries)
+{
+  // Truth at z = 0.25, detection at z = 0.75: one voxel layer on the paper's grid. A phase of 0.5
+  // along z puts the boundary between them (0.25 + 0.5 < 1 <= 0.75 + 0.5); along x it changes nothing.
+  Scene s;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y)
+    {
+      s.add (x + 0.5f, y + 0.5f, 0.25f, 1, 0);
+      s.add (x + 0.5f, y + 0.5f, 0.75f, 0, 2);
+    }
+  expectCounts (s.eval (), 16, 0, 0);
+  const auto z = evaluatePlaneDetection (s.cloud, s.truth, s.det, kUnitVoxels, {0.0, 0.0, 0.5});
+  expectCounts (z, 0, 16, 16);
+  EXPECT_EQ (z.false_planes, 1);
+  expectCounts (evaluatePlaneDetection (s.cloud, s.truth, s.det, kUnitVoxels, {0.5, 0.0, 0.0}), 16, 0, 0);
+  // A point at the maximum corner stays on the grid whatever the phase.
+  const auto top = evaluatePlaneDetection (s.cloud, s.truth, s.det, kUnitVoxels, {0.999, 0.999, 0.999});
+  EXPECT_EQ (top.planes, 1);
+}
+
+TEST (PlaneEvaluation, GridPhasesAreFixedAndSpread)
+{
+  const auto zero = gridPhase (0);
+  EXPECT_EQ (zero, (std::array<double, 3>{0.0, 0.0, 0.0}));
+  // The R3 sequence: multiples of 1/g, 1/g^2, 1/g^3 modulo 1, g^3 = g + 1.
+  const double g = 1.32471795724474602596;
+  const auto one = gridPhase (1);
+  EXPECT_NEAR (one[0], 1.0 / g, 1e-12);
+  EXPECT_NEAR (one[1], 1.0 / (g * g), 1e-12);
+  EXPECT_NEAR (one[2], 1.0 / (g * g * g), 1e-12);
+  // 64 phases: all in [0, 1), and every half of every axis gets between a third and two thirds.
+  std::array<int, 3> low{0, 0, 0};
+  for (std::size_t i = 0; i < 64; ++i)
+  {
+    const auto f = gridPhase (i);
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_GE (f[a], 0.0);
+      EXPECT_LT (f[a], 1.0);
+      low[a] += f[a] < 0.5;
+    }
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_GT (low[a], 64 / 3) << a;
+    EXPECT_LT (low[a], 2 * 64 / 3) << a;
+  }
+}
+
+TEST (PlaneEvaluation, PhaseScoresSummariseEveryGrid)
+{
+  // Truth at z = 0.25, detection at z = 0.6: one layer unless the phase along z is in (0.4, 0.75].
+  Scene s;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y)
+    {
+      s.add (x + 0.5f, y + 0.5f, 0.25f, 1, 0);
+      s.add (x + 0.5f, y + 0.5f, 0.6f, 0, 2);
+    }
+  const auto one = evaluateOverGridPhases (s.cloud, s.truth, s.det, kUnitVoxels, 1);
+  EXPECT_EQ (one.phases, 1u);
+  EXPECT_DOUBLE_EQ (one.f1_median, s.eval ().f1);
+  EXPECT_DOUBLE_EQ (one.f1_min, one.f1_max);
+
+  const std::size_t n = 20;
+  std::vector<double> f1;
+  int found_min = 1;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const auto r = evaluatePlaneDetection (s.cloud, s.truth, s.det, kUnitVoxels, gridPhase (i));
+    f1.push_back (r.f1);
+    found_min = std::min (found_min, r.found);
+  }
+  std::sort (f1.begin (), f1.end ());
+  ASSERT_EQ (f1.front (), 0.0); // some phase separates the layers
+  ASSERT_EQ (f1.back (), 1.0);
+  const auto all = evaluateOverGridPhases (s.cloud, s.truth, s.det, kUnitVoxels, n);
+  EXPECT_EQ (all.phases, n);
+  EXPECT_DOUBLE_EQ (all.f1_min, 0.0);
+  EXPECT_DOUBLE_EQ (all.f1_max, 1.0);
+  EXPECT_DOUBLE_EQ (all.f1_median, 0.5 * (f1[n / 2 - 1] + f1[n / 2]));
+  EXPECT_EQ (all.found_min, found_min);
+}
+
 TEST (PlaneEvaluation, CountsVoxelsNotPoints)
 {
   Scene s;
@@ -360,6 +448,10 @@ TEST (PlaneEvaluation, InvalidArgumentsThrow)
   EXPECT_THROW (s.eval (0.0), std::invalid_argument);
   EXPECT_THROW (s.eval (-0.01), std::invalid_argument);
   EXPECT_THROW (s.eval (std::numeric_limits<double>::quiet_NaN ()), std::invalid_argument);
+  for (const double f : {-0.1, 1.0, std::numeric_limits<double>::quiet_NaN ()})
+    EXPECT_THROW (evaluatePlaneDetection (s.cloud, s.truth, s.det, kUnitVoxels, {0.0, f, 0.0}),
+                  std::invalid_argument) << f;
+  EXPECT_THROW (evaluateOverGridPhases (s.cloud, s.truth, s.det, kUnitVoxels, 0), std::invalid_argument);
 }
 
 TEST (PlaneEvaluation, RotatedSceneWithDefaultVoxels)

@@ -175,6 +175,40 @@ TEST (EvaluateCli, BadInputExitsOneWithOneLine)
   }
   EXPECT_EQ (runTool (tool, {}).status, 2);
   EXPECT_EQ (runTool (tool, {dir.file ("p.pcd"), dir.file ("p.gt"), dir.file ("p.gt"), "--voxel", "-1"}).status, 2);
+  for (const char* phases : {"0", "1001", "x", "2.5"})
+    EXPECT_EQ (runTool (tool, {dir.file ("p.pcd"), dir.file ("p.gt"), dir.file ("p.gt"), "--phases", phases}).status, 2)
+        << phases;
+  EXPECT_EQ (runTool (tool, {dir.file ("p.pcd"), dir.file ("p.gt"), dir.file ("p.gt"), "--phases"}).status, 2);
+}
+
+TEST (EvaluateCli, PhasesSummariseShiftedGrids)
+{
+  // A perfect detection scores 1 on every grid; one that misses a plane scores below 1 on all.
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (tool, "rspd_evaluate");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"staircase", dir.file ("s"), "-n", "20000"}).status, 0);
+  const auto self = runTool (tool, {dir.file ("s.pcd"), dir.file ("s.gt"), dir.file ("s.gt"), "--phases", "8"});
+  ASSERT_EQ (self.status, 0) << self.err;
+  EXPECT_NE (self.out.find ("F1 over 8 grid phases: median 1.000000, lowest 1.000000, highest 1.000000; fewest found: 30/30"),
+             std::string::npos) << self.out;
+  std::ifstream in (dir.file ("s.gt"), std::ios::binary | std::ios::ate);
+  const std::size_t n = static_cast<std::size_t> (in.tellg ()) / 4;
+  in.seekg (0);
+  std::vector<std::uint32_t> labels (n);
+  in.read (reinterpret_cast<char*> (labels.data ()), static_cast<std::streamsize> (4 * n));
+  std::replace (labels.begin (), labels.end (), 1u, 0u);
+  {
+    std::ofstream out (dir.file ("less.gt"), std::ios::binary);
+    out.write (reinterpret_cast<const char*> (labels.data ()), static_cast<std::streamsize> (4 * n));
+  }
+  const auto less = runTool (tool, {dir.file ("s.pcd"), dir.file ("s.gt"), dir.file ("less.gt"), "--phases", "8", "--json"});
+  ASSERT_EQ (less.status, 0) << less.err;
+  EXPECT_NE (less.out.find ("\"phases\": 8"), std::string::npos) << less.out;
+  EXPECT_NE (less.out.find ("\"found_phase_min\": 29"), std::string::npos) << less.out;
+  EXPECT_NE (less.out.find ("\"f1_phase_max\": 0.9"), std::string::npos) << less.out;
+  const auto plain = runTool (tool, {dir.file ("s.pcd"), dir.file ("s.gt"), dir.file ("less.gt"), "--json"});
+  EXPECT_EQ (plain.out.find ("phases"), std::string::npos) << plain.out;
 }
 
 TEST (SegmentCli, OutputIsByteIdenticalForOneAndTwoThreads)
