@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -120,6 +120,10 @@ const char* const kHelp =
     "  --step-split on|off  a region of a plane lying parallel to the rest, offset by a step\n"
     "                   within its noise band (a door 2 cm proud of a wall), is split off as a\n"
     "                   plane (default on; off = it stays in its plane)\n"
+    "  --across-steps on|off  a plane whose points lie on two planes beside it, parallel to\n"
+    "                   each other and not to it, at least as closely as on its own (a strip\n"
+    "                   across a door's edge, half door and half wall) is dropped (default on;\n"
+    "                   off = it stays)\n"
     "  --bent-side-mnd on|off  a side of a bent plane passes T2 if its MND is below that of\n"
     "                   the plane it was cut from, where that is past T2's 60 degrees (default on;\n"
     "                   off = T2 at 60 degrees)\n"
@@ -208,6 +212,7 @@ struct Options
   bool bent_split = true;
   bool layer_merge = true;
   bool step_split = true;
+  bool across_steps = true;
   bool bent_side_mnd = true;
   bool curved_check = true;
   bool curved_turn = true;
@@ -354,6 +359,8 @@ parseArguments (int argc, char** argv)
       o.layer_merge = option.choice ("on", "off");
     else if (arg == "--step-split")
       o.step_split = option.choice ("on", "off");
+    else if (arg == "--across-steps")
+      o.across_steps = option.choice ("on", "off");
     else if (arg == "--bent-side-mnd")
       o.bent_side_mnd = option.choice ("on", "off");
     else if (arg == "--normal-fit")
@@ -557,6 +564,7 @@ run (const Options& o)
   seg.setBentPlaneSplit (o.bent_split);
   seg.setLayerMerge (o.layer_merge);
   seg.setStepSplit (o.step_split);
+  seg.setAcrossStepCheck (o.across_steps);
   seg.setBentSideParentMnd (o.bent_side_mnd);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setCurvedNormalTurn (o.curved_turn);
@@ -588,10 +596,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
        "pass (%zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.depth_level_dither)
     log ("depth levels: %s", stats.depth_levels ? (std::to_string (stats.depth_levels) + " distinct depths along the camera's axis, dithered within their bins").c_str ()
                                                 : "the depths are not a camera's levels: samples as given");

@@ -915,6 +915,10 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     }
   }
 
+  if (params.across_step_check)
+    // Planes across a step (departure, see DetectorParameters::across_step_check): once the far
+    // members released have made the door a plane of its own, and the layers are merged.
+    st.across_steps = dropPlanesAcrossSteps (points, graph, params, patches);
   lap ("layer merge");
   // Final refit (departure, see DetectorParameters::final_refit): the passes below judge samples by
   // their distance to each plane, which its least-squares plane gives better than its robust estimate.

@@ -4,6 +4,7 @@
  */
 #include <pcl_rspd/normal_estimation.h>  // resolveThreads
 #include <pcl_rspd/patch_growth.h>       // labelSamples, kNoPatch
+#include <pcl_rspd/patch_merge.h>        // normalsCompatible
 #include <pcl_rspd/robust_statistics.h> // robustSpread, median
 #include <pcl_rspd/step_split.h>
 
@@ -279,6 +280,81 @@ splitSteps (const PointSet& points, const NeighborGraph& graph, const DetectorPa
     ++split;
   }
   return split;
+}
+
+std::size_t
+dropPlanesAcrossSteps (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                       std::vector<PlanarPatch>& patches)
+{
+  if (patches.size () < 3)
+    return 0;
+  const std::vector<std::uint32_t> labels = labelSamples (points.size (), patches);
+  std::vector<char> drop (patches.size (), 0);
+#pragma omp parallel num_threads(resolveThreads (params.num_threads))
+  {
+    std::vector<std::uint32_t> beside;
+    std::vector<double> own, between;
+#pragma omp for schedule(dynamic, 1)
+    for (std::ptrdiff_t l = 0; l < static_cast<std::ptrdiff_t> (patches.size ()); ++l)
+    {
+      const PlanarPatch& plane = patches[l];
+      beside.clear ();
+      for (const auto i : plane.members)
+        graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+          if (labels[j] != kNoPatch && labels[j] != static_cast<std::uint32_t> (l))
+            beside.push_back (labels[j]);
+        });
+      std::sort (beside.begin (), beside.end ());
+      beside.erase (std::unique (beside.begin (), beside.end ()), beside.end ());
+      // The pairs that could explain the plane: parallel to each other, neither to the plane.
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+      for (std::size_t x = 0; x < beside.size (); ++x)
+      {
+        const PlanarPatch& a = patches[beside[x]];
+        if (normalsCompatible (plane, a))
+          continue;
+        for (std::size_t y = x + 1; y < beside.size (); ++y)
+        {
+          const PlanarPatch& b = patches[beside[y]];
+          if (normalsCompatible (a, b) && !normalsCompatible (plane, b))
+            pairs.emplace_back (beside[x], beside[y]);
+        }
+      }
+      if (pairs.empty ())
+        continue;
+      own.clear ();
+      for (const auto i : plane.members)
+        own.push_back (std::abs ((points.points[i].cast<double> () - plane.center).dot (plane.normal)));
+      const double own_sigma = kMadScale * medianInPlace (own);
+      for (const auto& [ia, ib] : pairs)
+      {
+        const PlanarPatch& a = patches[ia];
+        const PlanarPatch& b = patches[ib];
+        between.clear ();
+        for (const auto i : plane.members)
+        {
+          const Eigen::Vector3d p = points.points[i].cast<double> ();
+          between.push_back (std::min (std::abs ((p - a.center).dot (a.normal)), std::abs ((p - b.center).dot (b.normal))));
+        }
+        if (kMadScale * medianInPlace (between) <= own_sigma)
+        {
+          drop[l] = 1;
+          break;
+        }
+      }
+    }
+  }
+  std::size_t kept = 0;
+  for (std::size_t l = 0; l < patches.size (); ++l)
+    if (!drop[l])
+    {
+      if (kept != l)
+        patches[kept] = std::move (patches[l]);
+      ++kept;
+    }
+  const std::size_t dropped = patches.size () - kept;
+  patches.resize (kept);
+  return dropped;
 }
 
 } // namespace rspd

@@ -1,6 +1,7 @@
 /*
  * Tests of the step split (departure, splitSteps): a region offset parallel to the rest of its plane,
- * by less than the plane's noise band, is split off; bowls, strips and flat planes are not.
+ * by less than the plane's noise band, is split off; bowls, strips and flat planes are not. And of
+ * planes across a step (dropPlanesAcrossSteps): a strip bridging a step is dropped, a ramp is not.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
@@ -8,6 +9,8 @@
 #include <pcl_rspd/step_split.h>
 
 #include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <functional>
 #include <random>
@@ -149,4 +152,121 @@ TEST (StepSplit, NoPlanesAndNoiseFreePlanesAreLeftAlone)
   EXPECT_EQ (splitSteps (w.set, g, rspd_test::unitParameters (), w.patches), 0u);
   ASSERT_EQ (w.patches.size (), 1u);
   EXPECT_EQ (w.patches[0].members, before);
+}
+
+// --- Planes across a step (dropPlanesAcrossSteps) ---------------------------------------------
+
+namespace
+{
+/** The wall of makeWall with a step along x = 0.9 (z = 0 before it, \a rise after), cut into three
+  * planes: A (x < 0.75, at z = 0), B (x > 1.05, at z = rise) and P between them. P's plane is its
+  * least-squares plane unless \a p_normal is given; MND 0.03 rad for all three. */
+struct Step
+{
+  Wall wall;
+  std::vector<PlanarPatch> patches; ///< A, B, P
+};
+
+Step
+makeStep (const std::function<double (double, double)>& height, double rise, float sigma, std::uint32_t seed,
+          float scale = 1.0f, const Eigen::Vector3d* p_normal = nullptr)
+{
+  Step s{makeWall (height, sigma, seed, scale), {}};
+  std::vector<std::uint32_t> a, b, p;
+  for (std::uint32_t i = 0; i < s.wall.set.points.size (); ++i)
+  {
+    const float x = s.wall.set.points[i].x () / scale;
+    (x < 0.75f ? a : x > 1.05f ? b : p).push_back (i);
+  }
+  // P's least-squares plane (centroid, smallest eigenvector), as a detector would fit the strip.
+  Eigen::Vector3d c = Eigen::Vector3d::Zero ();
+  for (const auto i : p)
+    c += s.wall.set.points[i].cast<double> ();
+  c /= static_cast<double> (p.size ());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+  for (const auto i : p)
+  {
+    const Eigen::Vector3d d = s.wall.set.points[i].cast<double> () - c;
+    cov += d * d.transpose ();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig (cov);
+  const Eigen::Vector3d n = p_normal ? *p_normal : eig.eigenvectors ().col (0);
+  const double band = 3.0 * sigma * scale;
+  s.patches = {rspd_test::makePatch (a, {0, 0, 0}, {0, 0, 1}, band, 0.03),
+               rspd_test::makePatch (b, {0, 0, rise * scale}, {0, 0, 1}, band, 0.03),
+               rspd_test::makePatch (p, c, n, band, 0.03)};
+  return s;
+}
+
+double
+stepAt09 (double x, double)
+{
+  return x > 0.9 ? 0.02 : 0.0;
+}
+
+double
+rampBetween (double x, double)
+{
+  // 3 cm over 0.75 < x < 1.05: a real sloped face between two parallel ones.
+  return x <= 0.75 ? 0.0 : x >= 1.05 ? 0.03 : 0.1 * (x - 0.75);
+}
+} // namespace
+
+TEST (AcrossSteps, StripAcrossADoorsEdgeIsDropped)
+{
+  // The strip holds the wall's and the door's samples either side of a 2 cm step at σ = 3 mm: its
+  // least-squares plane is tilted about 5.7°, past the MNDs, and the nearer of the wall and the door
+  // explains each sample better than the strip's own plane does.
+  Step s = makeStep (stepAt09, 0.02, 0.003f, 3);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.wall.set.points, 30);
+  const std::vector<std::uint32_t> a = s.patches[0].members, b = s.patches[1].members;
+  EXPECT_EQ (dropPlanesAcrossSteps (s.wall.set, g, rspd_test::unitParameters (), s.patches), 1u);
+  ASSERT_EQ (s.patches.size (), 2u);
+  EXPECT_EQ (s.patches[0].members, a); // the planes kept keep their order and members
+  EXPECT_EQ (s.patches[1].members, b);
+}
+
+TEST (AcrossSteps, SlopedFaceBetweenParallelPlanesStays)
+{
+  // A ramp rising 3 cm between the two parallel planes lies on its own plane (σ 3 mm) and up to
+  // 1.5 cm from the nearer of the others (robust σ about 11 mm).
+  Step s = makeStep (rampBetween, 0.03, 0.003f, 4);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.wall.set.points, 30);
+  EXPECT_EQ (dropPlanesAcrossSteps (s.wall.set, g, rspd_test::unitParameters (), s.patches), 0u);
+  EXPECT_EQ (s.patches.size (), 3u);
+}
+
+TEST (AcrossSteps, OnlyAParallelPairNotParallelToThePlaneExplainsIt)
+{
+  // The same strip given the wall's normal: parallel to both (M2), so no pair may explain it away
+  // (it may be another window of a facade, coplanar with one beside it).
+  const Eigen::Vector3d up (0, 0, 1);
+  Step flat = makeStep (stepAt09, 0.02, 0.003f, 3, 1.0f, &up);
+  const NeighborGraph g = rspd_test::bruteForceGraph (flat.wall.set.points, 30);
+  EXPECT_EQ (dropPlanesAcrossSteps (flat.wall.set, g, rspd_test::unitParameters (), flat.patches), 0u);
+  // The strip beside two planes that meet at an edge (B turned upright): the distances to both
+  // vanish along their edge, so such a pair explains nothing either.
+  Step edge = makeStep (stepAt09, 0.02, 0.003f, 3);
+  edge.patches[1] = rspd_test::makePatch (edge.patches[1].members, {1.05, 0, 0}, {1, 0, 0}, 0.009, 0.03);
+  EXPECT_EQ (dropPlanesAcrossSteps (edge.wall.set, g, rspd_test::unitParameters (), edge.patches), 0u);
+  EXPECT_EQ (edge.patches.size (), 3u);
+  // Fewer than three planes: nothing to judge.
+  edge.patches.pop_back ();
+  EXPECT_EQ (dropPlanesAcrossSteps (edge.wall.set, g, rspd_test::unitParameters (), edge.patches), 0u);
+}
+
+TEST (AcrossSteps, VerdictDoesNotDependOnScaleOrThreadCount)
+{
+  for (const float scale : {1.0f, 1000.0f})
+    for (const int threads : {1, 2})
+    {
+      Step s = makeStep (stepAt09, 0.02, 0.003f, 3, scale);
+      const NeighborGraph g = rspd_test::bruteForceGraph (s.wall.set.points, 30);
+      EXPECT_EQ (dropPlanesAcrossSteps (s.wall.set, g, rspd_test::unitParameters (threads), s.patches), 1u)
+          << scale << " " << threads;
+      Step r = makeStep (rampBetween, 0.03, 0.003f, 4, scale);
+      const NeighborGraph rg = rspd_test::bruteForceGraph (r.wall.set.points, 30);
+      EXPECT_EQ (dropPlanesAcrossSteps (r.wall.set, rg, rspd_test::unitParameters (threads), r.patches), 0u)
+          << scale << " " << threads;
+    }
 }

@@ -128,6 +128,9 @@ struct RobustPlane
   *  - band layers (setLayerMerge(false) for the paper): then a plane lying among a larger plane's
   *    samples (half of its members beside one of them) and within that plane's noise band across its
   *    extent is merged into it: two seeds of one noisy face grow into two layers of its band;
+  *  - planes across a step (setAcrossStepCheck(false) to keep them): then a plane whose members lie
+  *    on two planes beside it, parallel to each other and not to it, at least as closely as on its
+  *    own is dropped: a strip seeded across a door's edge before the door was parted from its wall;
   *  - edge sides (setEdgeSides(false) for the paper): after the last assignment, a sample next to
   *    another plane leaves its plane when its projection onto it lies beyond the line where the two
   *    planes meet (the side the plane's members hold), for the other plane if that one would own it
@@ -516,6 +519,18 @@ public:
   /** \brief Whether regions offset by a step within a plane's noise band are split off. */
   bool
   getStepSplit () const { return params_.step_split; }
+
+  /** \brief Planes across a step (default true; false = they stay): after the layer merge, a plane
+    * whose members lie on two planes beside it, parallel to each other and not to it, at least as
+    * closely (robust σ of the distance to the nearer) as on its own plane is dropped, its samples
+    * left to the last assignment: a strip of a door's and its wall's samples seeded before the door
+    * was parted from the wall. See pcl::rspd::dropPlanesAcrossSteps and
+    * pcl::rspd::DetectorParameters::across_step_check. */
+  void
+  setAcrossStepCheck (bool enable);
+  /** \brief Whether planes that only bridge a step between two parallel planes are dropped. */
+  bool
+  getAcrossStepCheck () const { return params_.across_step_check; }
 
   /** \brief Edge sides (default true; false = the paper): where two planes meet, a sample of one
     * whose projection onto it lies beyond the line where they meet leaves it, for the other plane

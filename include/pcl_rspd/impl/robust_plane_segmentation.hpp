@@ -383,6 +383,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setStepSplit (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setAcrossStepCheck (bool enable)
+{
+  params_.across_step_check = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setBentPlaneSplit (bool enable)
 {
   params_.bent_plane_split = enable;
