@@ -75,6 +75,28 @@ TEST (PatchMerge, LargestPatchRepresentsTheGroup)
   EXPECT_EQ (patches[0].first_index, 0u);
 }
 
+TEST (PatchMerge, MergedPlaneIsRetestedOnlyIfEveryPartWas)
+{
+  // The two coplanar strips of LargestPatchRepresentsTheGroup, flagged in each combination: the
+  // group is judged again once grown only if both parts were seeded as noisy.
+  for (const bool small_retested : {false, true})
+    for (const bool large_retested : {false, true})
+    {
+      PointSet s;
+      const auto a = rspd_test::addRectangle (s, {0, 0, 0}, {0.3f, 0, 0}, {0, 1, 0}, 6, 20);
+      const auto b = rspd_test::addRectangle (s, {0.3f, 0, 0}, {0.7f, 0, 0}, {0, 1, 0}, 14, 20);
+      const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 10);
+      std::vector<PlanarPatch> patches{rspd_test::makePatch (a, {0.1, 0.5, 0}, {0, 0, 1}, 0.01, 0.1),
+                                       rspd_test::makePatch (b, {0.6, 0.5, 0}, {0, 0, 1}, 0.01, 0.1)};
+      patches[0].retested = small_retested;
+      patches[1].retested = large_retested;
+      auto labels = labelSamples (s.size (), patches);
+      ASSERT_EQ (mergePatches (s, g, patches, labels), 1u);
+      ASSERT_EQ (patches.size (), 1u);
+      EXPECT_EQ (patches[0].retested, small_retested && large_retested) << small_retested << large_retested;
+    }
+}
+
 TEST (PatchMerge, OneBoundaryInlierIsEnoughForM3)
 {
   // B is tilted so that only the samples of B right at A's edge are inliers of A (M3 holds there),

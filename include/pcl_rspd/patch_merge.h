@@ -59,7 +59,8 @@ normalsCompatible (const PlanarPatch& a, const PlanarPatch& b);
   * or the sample of B is an inlier of A (the boundary samples carry the test). Groups are closed
   * transitively by union-find; the largest patch (ties: lowest member index) represents its group
   * and keeps its plane, its estimate size and its place; the others' members join it. Whether the
-  * merged patch needs re-estimating is left to the caller (Sec. 3.5).
+  * merged patch needs re-estimating is left to the caller (Sec. 3.5). It stays PlanarPatch::retested
+  * only if every patch of the group was.
   *
   * With rules.coplanar (M4), the pairs are joined one at a time, the pair whose larger representative
   * is largest first, and only if the group with the smaller representative lies in the larger

@@ -53,8 +53,9 @@ struct PlanarPatch
     * the members change otherwise, growing it again would add nothing. */
   bool grown = false;
   /** Seeded by an outlier seed tested again (DetectorParameters::retest_outlier_seeds), or by a
-    * small-plane seed as noisy, which only such a seed lets in; kept by a merge where it is the
-    * larger part. Such a plane is judged flat again once grown. */
+    * small-plane seed as noisy, which only such a seed lets in; kept by a merge only where every
+    * part has it (a part seeded within the planes' own noise bound vouches for the plane). Such a
+    * plane is judged flat again once grown. */
   bool retested = false;
   /** Seeded by a group of thick cells (DetectorParameters::join_thick_cells): noisy by nature, its
     * MND lets only flat seeds of the small-plane pass in, as a retested plane's does. */
