@@ -10,6 +10,7 @@
  */
 
 #include "cloud_io.h"
+#include "command_line.h"
 #include "label_io.h"
 
 #include <pcl_rspd/plane_evaluation.h>
@@ -119,10 +120,7 @@ main (int argc, char** argv)
       if (i + 1 >= argc)
         return usageError ("--phases needs a value");
       const std::string value = argv[++i];
-      char* end = nullptr;
-      errno = 0;
-      phases = std::strtol (value.c_str (), &end, 10);
-      if (value.empty () || *end != '\0' || errno == ERANGE || phases < 1 || phases > 1000)
+      if (!rspd_tools::parseInteger (value, 1L, 1000L, phases))
         return usageError ("--phases needs an integer from 1 to 1000, got '" + value + "'");
     }
     else

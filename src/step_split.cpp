@@ -324,7 +324,7 @@ dropPlanesAcrossSteps (const PointSet& points, const NeighborGraph& graph, const
         continue;
       own.clear ();
       for (const auto i : plane.members)
-        own.push_back (std::abs ((points.points[i].cast<double> () - plane.center).dot (plane.normal)));
+        own.push_back (std::abs (distanceTo (points, i, plane.center, plane.normal)));
       const double own_sigma = kMadScale * medianInPlace (own);
       for (const auto& [ia, ib] : pairs)
       {
@@ -332,10 +332,8 @@ dropPlanesAcrossSteps (const PointSet& points, const NeighborGraph& graph, const
         const PlanarPatch& b = patches[ib];
         between.clear ();
         for (const auto i : plane.members)
-        {
-          const Eigen::Vector3d p = points.points[i].cast<double> ();
-          between.push_back (std::min (std::abs ((p - a.center).dot (a.normal)), std::abs ((p - b.center).dot (b.normal))));
-        }
+          between.push_back (std::min (std::abs (distanceTo (points, i, a.center, a.normal)),
+                                       std::abs (distanceTo (points, i, b.center, b.normal))));
         if (kMadScale * medianInPlace (between) <= own_sigma)
         {
           drop[l] = 1;
