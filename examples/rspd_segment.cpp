@@ -32,7 +32,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
-    " [--normal-fit pca|trimmed] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -130,6 +130,10 @@ const char* const kHelp =
     "  --normal-fit pca|trimmed   estimated normals by PCA over the k-neighbourhood (default, the\n"
     "                             paper) or from its reweighted least-trimmed-squares plane (more\n"
     "                             accurate at edges, ~20x the normal stage's time)\n"
+    "  --edge-normals on|off      estimated normals narrowed to one face near an edge, where that\n"
+    "                             turns them by more than noise, and small-plane cells down to 16\n"
+    "                             points (default off; finds small faces at the scale of a\n"
+    "                             neighbourhood, but more facets of noisy curved surfaces)\n"
     "  --frame planes|axes        work along the dominant plane orientations (independent of how the\n"
     "                             cloud is rotated) or along its coordinate axes (the paper)\n"
     "  --outlier-seeds retest|drop|keep  drop split seeds whose MND is an outlier among all\n"
@@ -224,6 +228,7 @@ struct Options
   bool noisy_bent_split = false;
   bool dominant_frame = true;
   bool trimmed_normals = false;
+  bool edge_normals = false;
   pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Tails;
   bool verbose = false;
   bool help = false;
@@ -365,6 +370,8 @@ parseArguments (int argc, char** argv)
       o.bent_side_mnd = option.choice ("on", "off");
     else if (arg == "--normal-fit")
       o.trimmed_normals = !option.choice ("pca", "trimmed");
+    else if (arg == "--edge-normals")
+      o.edge_normals = option.choice ("on", "off");
     else if (arg == "--frame")
       o.dominant_frame = option.choice ("planes", "axes");
     else if (arg == "--bounded-reestimate")
@@ -575,6 +582,7 @@ run (const Options& o)
   seg.setBoundedReestimation (o.bounded_reestimate);
   seg.setNoisyPlaneBentSplit (o.noisy_bent_split);
   seg.setNormalFit (o.trimmed_normals ? pcl::rspd::NormalFit::TrimmedPlane : pcl::rspd::NormalFit::Pca);
+  seg.setEdgeAwareNormals (o.edge_normals);
   seg.setDetectionFrame (o.dominant_frame ? pcl::rspd::DetectionFrame::DominantPlanes
                                           : pcl::rspd::DetectionFrame::InputAxes);
   seg.setFinalAssignment (o.assignment);
@@ -600,6 +608,8 @@ run (const Options& o)
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+  if (o.edge_normals)
+    log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)
     log ("depth levels: %s", stats.depth_levels ? (std::to_string (stats.depth_levels) + " distinct depths along the camera's axis, dithered within their bins").c_str ()
                                                 : "the depths are not a camera's levels: samples as given");

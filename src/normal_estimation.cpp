@@ -58,9 +58,14 @@ neighbourhoodCovariance (const Eigen::Vector3f& self, int k, const std::vector<E
   * ball. A neighbourhood without two independent directions (coincident or collinear samples) has no
   * surface normal: ratio 1. */
 void
-fitNormal (const Eigen::Matrix3d& cov, Eigen::Vector3f& normal, double& ratio)
+fitNormal (const Eigen::Matrix3d& cov, Eigen::Vector3f& normal, double& ratio, double* smallest = nullptr,
+           double* middle = nullptr)
 {
   ratio = 1.0;
+  if (smallest)
+    *smallest = 0.0;
+  if (middle)
+    *middle = 0.0;
   if (!(cov.cwiseAbs ().maxCoeff () > 0.0))
     return;
   double l0;
@@ -80,6 +85,10 @@ fitNormal (const Eigen::Matrix3d& cov, Eigen::Vector3f& normal, double& ratio)
   const double l1 = 0.5 * (sum - std::sqrt (std::max (0.0, sum * sum - 4.0 * product)));
   if (l1 > 0.0 && std::isfinite (l1))
     ratio = std::min (1.0, l0 / l1);
+  if (smallest)
+    *smallest = l0;
+  if (middle)
+    *middle = std::isfinite (l1) ? std::max (0.0, l1) : 0.0;
 }
 
 /** splitmix64: a tiny generator whose stream is the same on every platform (the standard
@@ -363,6 +372,76 @@ estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const 
   }
   st.unresolved = pending.size ();
   st.samples_per_scale[0] += pending.size ();
+}
+
+std::size_t
+narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
+                      int k_min, std::vector<Eigen::Vector3f>& normals)
+{
+  const int k = graph.k ();
+  if (points.size () != normals.size () || k_min < 2 || k <= k_min)
+    return 0;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (points.size ());
+  std::size_t narrowed = 0;
+  const double resolved_below = isotropicEigenRatioQuantile (k_min, 0.05); // as estimateAdaptiveScaleNormals
+#pragma omp parallel num_threads(resolveThreads (num_threads)) reduction(+ : narrowed)
+  {
+    std::vector<std::pair<float, std::uint32_t>> row;
+    row.reserve (static_cast<std::size_t> (k));
+#pragma omp for schedule(static, 4096)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+    {
+      // The graph keeps a row as a set; the prefixes need it nearest first (ties by index).
+      row.clear ();
+      graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) {
+        row.emplace_back ((points[j] - points[i]).squaredNorm (), j);
+      });
+      std::sort (row.begin (), row.end ());
+      const auto fitPrefix = [&] (int m, Eigen::Vector3f& normal, double& l0, double& l1) {
+        const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], m, points, [&] (auto&& add) {
+          for (int t = 0; t < m; ++t)
+            add (row[static_cast<std::size_t> (t)].second);
+        });
+        normal = Eigen::Vector3f::UnitZ ();
+        double ratio;
+        fitNormal (cov, normal, ratio, &l0, &l1);
+        return ratio;
+      };
+      Eigen::Vector3f face_normal;
+      double reference, l0, l1;
+      if (!(fitPrefix (k_min, face_normal, reference, l1) < resolved_below))
+        continue; // the nearest few resolve no surface: no face to narrow to
+      // Standard error (radians) of a PCA normal's tilt towards its least in-plane direction.
+      double face_error = l1 > 0.0 ? std::sqrt (reference / (static_cast<double> (k_min + 1) * l1)) : HUGE_VAL;
+      // The whole neighbourhood first: most samples lie on one face (its spread along the normal
+      // is the noise's), and keep their k-normal after two fits.
+      Eigen::Vector3f k_normal;
+      double k_spread;
+      fitPrefix (k, k_normal, k_spread, l0);
+      if (!(k_spread > kEdgeSpreadRatio * reference))
+        continue;
+      // Widen from the k_min nearest while the spread along the normal stays the noise's; the first
+      // prefix beyond it reaches across an edge, the one before is the sample's face.
+      for (int m = k_min + kEdgeNormalStep; m < k; m += kEdgeNormalStep)
+      {
+        Eigen::Vector3f normal;
+        fitPrefix (m, normal, l0, l1);
+        if (l0 > kEdgeSpreadRatio * reference)
+          break;
+        face_normal = normal;
+        face_error = l1 > 0.0 ? std::sqrt (l0 / (static_cast<double> (m + 1) * l1)) : HUGE_VAL;
+      }
+      // The whole neighbourhood spreads more than the face along its normal; replace the k-normal
+      // only if the face's normal turns from it by more than its own noise explains.
+      const double cosine = std::min (1.0, static_cast<double> (std::abs (face_normal.dot (normals[i]))));
+      if (std::acos (cosine) > kEdgeTurnErrors * face_error)
+      {
+        normals[i] = face_normal;
+        ++narrowed;
+      }
+    }
+  }
+  return narrowed;
 }
 
 } // namespace rspd

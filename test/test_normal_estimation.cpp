@@ -307,3 +307,148 @@ TEST (NormalEstimation, GivenNormalsOfAResolvedSurfaceAreKept)
   EXPECT_FALSE (pcl::rspd::givenNormalsAreNoise (p, graph, 2, Points (3), &check));
   EXPECT_FALSE (pcl::rspd::givenNormalsAreNoise (Points (), graph, 2, Points (), &check));
 }
+
+namespace
+{
+/** A fold: face A in z = 0 (x in [-1, 0]) and face B in x = 0 (z in [0, 1]), y in [-0.5, 0.5], n
+  * samples in all, Gaussian noise of \a sigma along each face's normal, in spatial order. */
+Points
+fold (std::size_t n, float sigma, unsigned seed)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (0.f, 1.f);
+  std::normal_distribution<float> g (0.f, sigma);
+  Points p (n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float a = u (rng), y = u (rng) - 0.5f, e = sigma > 0.f ? g (rng) : 0.f;
+    p[i] = i % 2 == 0 ? Eigen::Vector3f (-a, y, e) : Eigen::Vector3f (e, y, a);
+  }
+  return inSpatialOrder (p);
+}
+
+/** Median angle (degrees) to +Z of the normals of face A's samples whose distance to the edge lies
+  * in [near, far) and that are away from the y rims. */
+double
+bandErrorDegrees (const Points& p, const Points& normals, float near, float far)
+{
+  std::vector<double> a;
+  for (std::size_t i = 0; i < p.size (); ++i)
+    if (std::abs (p[i].z ()) < 0.02f && p[i].x () <= -near && p[i].x () > -far && std::abs (p[i].y ()) < 0.3f)
+      a.push_back (std::acos (std::min (1.0, std::abs (static_cast<double> (normals[i].z ())))) / kDegree);
+  std::nth_element (a.begin (), a.begin () + a.size () / 2, a.end ());
+  return a[a.size () / 2];
+}
+
+struct Narrowed
+{
+  Points pca, narrowed;
+  std::size_t count = 0;
+};
+
+Narrowed
+narrowBoth (const Points& p, int k, int threads = 2)
+{
+  pcl::rspd::NeighborGraph graph;
+  EXPECT_TRUE (pcl::rspd::buildKnnGraph (p, k, threads, graph));
+  Narrowed r;
+  pcl::rspd::estimateNormals (p, graph, threads, r.pca);
+  r.narrowed = r.pca;
+  r.count = pcl::rspd::narrowNormalsAtEdges (p, graph, threads, 15, r.narrowed);
+  return r;
+}
+} // namespace
+
+TEST (EdgeNormals, SamplesNearAnEdgeGetTheirFacesNormal)
+{
+  // 4,000 samples on 2 m²: a 50-neighbourhood reaches about 9 cm, a 15-neighbourhood about 5 cm.
+  // Between the two from the edge, the k-normal leans towards face B; the narrowed one does not.
+  const Points p = fold (4000, 1e-4f, 1);
+  const Narrowed r = narrowBoth (p, 50);
+  const double pca = bandErrorDegrees (p, r.pca, 0.05f, 0.08f), narrowed = bandErrorDegrees (p, r.narrowed, 0.05f, 0.08f);
+  std::printf ("    5-8 cm from the edge: k-normals %.2f deg off, narrowed %.2f deg; %zu of %zu narrowed\n", pca,
+               narrowed, r.count, p.size ());
+  EXPECT_GT (pca, 5.0);
+  EXPECT_LT (narrowed, 1.0);
+  // Farther than a k-neighbourhood from the edge, a normal changes only by chance (a few samples whose
+  // spread crosses the ratio and whose normals differ by more than their noise), and then by noise.
+  std::size_t far = 0, changed = 0;
+  for (std::size_t i = 0; i < p.size (); ++i)
+    if (p[i].x () < -0.15f && std::abs (p[i].y ()) < 0.35f)
+    {
+      ++far;
+      if (r.narrowed[i] == r.pca[i])
+        continue;
+      ++changed;
+      EXPECT_LT (std::acos (std::min (1.0, std::abs (static_cast<double> (r.narrowed[i].dot (r.pca[i]))))) / kDegree, 0.5);
+    }
+  EXPECT_LT (changed, far / 50);
+}
+
+TEST (EdgeNormals, NoiseAloneKeepsTheKNormals)
+{
+  // One noisy face, no edge (noise a third of a 50-neighbourhood's radius): a narrower normal is only
+  // a noisier one, and the k-normal stands but where both tests pass by chance (1.4 %, measured).
+  const Points p = noisySquare (20000, 0.01f, 5);
+  const Narrowed r = narrowBoth (p, 50);
+  std::printf ("    %zu of %zu narrowed; median error %.2f -> %.2f deg\n", r.count, p.size (),
+               medianErrorDegrees (p, r.pca), medianErrorDegrees (p, r.narrowed));
+  EXPECT_LT (r.count, p.size () / 50);
+  EXPECT_NEAR (medianErrorDegrees (p, r.narrowed), medianErrorDegrees (p, r.pca), 0.15);
+}
+
+TEST (EdgeNormals, VolumeWithoutSurfaceIsNotNarrowed)
+{
+  // Samples filling a cube: a 15-neighbourhood resolves a surface only by chance (the resolution
+  // test's 5 % level), and only such a sample can be narrowed.
+  std::mt19937 rng (6);
+  std::uniform_real_distribution<float> u (-0.5f, 0.5f);
+  Points p (5000);
+  for (auto& x : p)
+    x = Eigen::Vector3f (u (rng), u (rng), u (rng));
+  p = inSpatialOrder (p);
+  const Narrowed r = narrowBoth (p, 50);
+  std::printf ("    %zu of %zu narrowed\n", r.count, p.size ());
+  EXPECT_LT (r.count, p.size () / 20);
+}
+
+TEST (EdgeNormals, IndependentOfThreadCountUnitsAndOrientation)
+{
+  const Points p = fold (6000, 0.002f, 7);
+  const Narrowed one = narrowBoth (p, 40, 1), two = narrowBoth (p, 40, 2);
+  EXPECT_TRUE (one.narrowed == two.narrowed);
+  EXPECT_EQ (one.count, two.count);
+  // A power of two scales every float operation exactly.
+  Points binary (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    binary[i] = 1024.f * p[i];
+  const Narrowed b = narrowBoth (binary, 40);
+  EXPECT_TRUE (b.narrowed == one.narrowed);
+  // Millimetres, turned: the same share narrowed and the same accuracy near the edge.
+  const Eigen::Matrix3f rot = Eigen::AngleAxisf (0.9f, Eigen::Vector3f (3.f, -1.f, 2.f).normalized ()).toRotationMatrix ();
+  Points turned (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    turned[i] = 1000.f * (rot * p[i]);
+  const Narrowed t = narrowBoth (turned, 40);
+  Points normals_back (p.size ());
+  for (std::size_t i = 0; i < p.size (); ++i)
+    normals_back[i] = rot.transpose () * t.narrowed[i];
+  std::printf ("    narrowed %zu, turned in mm %zu\n", one.count, t.count);
+  EXPECT_NEAR (static_cast<double> (t.count), static_cast<double> (one.count), 0.02 * one.count);
+  EXPECT_NEAR (bandErrorDegrees (p, normals_back, 0.04f, 0.07f), bandErrorDegrees (p, one.narrowed, 0.04f, 0.07f), 0.5);
+}
+
+TEST (EdgeNormals, NothingToDoWithoutANarrowerPrefix)
+{
+  const Points p = fold (2000, 1e-4f, 8);
+  pcl::rspd::NeighborGraph graph;
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 15, 1, graph));
+  Points normals;
+  pcl::rspd::estimateNormals (p, graph, 1, normals);
+  const Points before = normals;
+  EXPECT_EQ (pcl::rspd::narrowNormalsAtEdges (p, graph, 1, 15, normals), 0u); // k = k_min
+  EXPECT_EQ (pcl::rspd::narrowNormalsAtEdges (p, graph, 1, 1, normals), 0u);  // k_min < 2
+  Points wrong_size (3);
+  EXPECT_EQ (pcl::rspd::narrowNormalsAtEdges (p, graph, 1, 10, wrong_size), 0u);
+  EXPECT_TRUE (normals == before);
+}

@@ -637,6 +637,51 @@ TEST (RobustPlaneSegmentation, LeftNormalRefitIsOnForGivenNormalsOffForOwnAndSwi
     EXPECT_EQ (on[p].indices, off[p].indices);
 }
 
+TEST (RobustPlaneSegmentation, EdgeAwareNormalsAreOffByDefaultAndOnlyForEstimatedPcaNormals)
+{
+  // 60,000 samples: k = 30, so prefixes of 15 to 30 neighbours are tried.
+  std::vector<int> truth;
+  auto cloud = boxCorner (20000, &truth);
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  EXPECT_FALSE (seg.getEdgeAwareNormals ());
+  seg.setInputCloud (cloud);
+  std::vector<pcl::ModelCoefficients> c;
+  std::vector<pcl::PointIndices> off, on, on_again;
+  seg.segment (c, off);
+  ASSERT_EQ (off.size (), 3u);
+  EXPECT_EQ (seg.getStatistics ().edge_narrowed_normals, 0u);
+  seg.setEdgeAwareNormals (true);
+  EXPECT_TRUE (seg.getEdgeAwareNormals ());
+  seg.segment (c, on);
+  ASSERT_EQ (on.size (), 3u);
+  const std::size_t narrowed = seg.getStatistics ().edge_narrowed_normals;
+  EXPECT_GT (narrowed, 0u); // the samples near the corner's three edges
+  EXPECT_LT (narrowed, cloud->size () / 10);
+  // Per sample: the thread count changes nothing.
+  seg.setNumberOfThreads (1);
+  seg.segment (c, on_again);
+  EXPECT_EQ (seg.getStatistics ().edge_narrowed_normals, narrowed);
+  ASSERT_EQ (on_again.size (), on.size ());
+  for (std::size_t p = 0; p < on.size (); ++p)
+    EXPECT_EQ (on[p].indices, on_again[p].indices);
+  // Not with trimmed normals, nor with the caller's.
+  seg.setNormalFit (pcl::rspd::NormalFit::TrimmedPlane);
+  seg.segment (c, off);
+  EXPECT_EQ (seg.getStatistics ().edge_narrowed_normals, 0u);
+  seg.setNormalFit (pcl::rspd::NormalFit::Pca);
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+  {
+    pcl::Normal n (0, 0, 0);
+    n.normal[truth[i] - 1] = 1.0f;
+    normals->push_back (n);
+  }
+  seg.setInputNormals (normals);
+  seg.segment (c, off);
+  ASSERT_EQ (off.size (), 3u);
+  EXPECT_EQ (seg.getStatistics ().edge_narrowed_normals, 0u);
+}
+
 TEST (RobustPlaneSegmentation, DeterministicAcrossRunsAndThreads)
 {
   auto cloud = boxCorner (3000);

@@ -293,6 +293,8 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_released_on.pcd", {"--released-planes", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_across_on.pcd", {"--across-steps", "on"}));
   labels ("r.pcd", "room_across_off.pcd", {"--across-steps=off"}); // accepted (status 0)
+  EXPECT_TRUE (room == labels ("r.pcd", "room_edge_normals_off.pcd", {"--edge-normals", "off"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_edge_normals_on.pcd", {"--edge-normals=on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_bounded_on.pcd", {"--bounded-reestimate", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_support_on.pcd", {"--support", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_left_pca.pcd", {"--left-normals", "pca"}));

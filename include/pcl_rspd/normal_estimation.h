@@ -160,5 +160,40 @@ givenNormalsAreNoise (const std::vector<Eigen::Vector3f>& points, const Neighbor
 int
 resolveThreads (int requested);
 
+/** \brief Prefix sizes narrowNormalsAtEdges steps through: k_min, k_min + 5, ..., k. */
+constexpr int kEdgeNormalStep = 5;
+/** \brief narrowNormalsAtEdges: a prefix whose variance along its normal exceeds this many times the
+  * k_min nearest's reaches across an edge. The smallest eigenvalue of a flat face's neighbourhood is
+  * its noise variance whatever the radius; one across an edge grows with the radius squared. */
+constexpr double kEdgeSpreadRatio = 3.0;
+/** \brief narrowNormalsAtEdges: the face's normal replaces the k-normal only if they differ by more
+  * than this many standard errors of the face's normal (noise alone rarely does). */
+constexpr double kEdgeTurnErrors = 4.0;
+
+/** \brief Edge-aware normals (departure, off by default; RobustPlaneSegmentation::setEdgeAwareNormals):
+  * each sample's PCA normal over the widest prefix of its neighbours, nearest first, that stays on one
+  * face, where that differs from its k-neighbourhood's normal by more than noise.
+  *
+  * Why: a PCA normal over k neighbours bends within a neighbourhood's radius of an edge, and on a
+  * small face (a cabinet's top of 250-300 samples in a 100,000-point room, k = 50) that band is most
+  * of the face; every cell of it then fails T1 or T3, and the face is never seeded. The smallest
+  * covariance eigenvalue λ0 of a neighbourhood on one flat face is its noise variance, whatever its
+  * radius; once the neighbourhood reaches across an edge it grows with the radius squared. So the
+  * prefixes k_min, k_min + kEdgeNormalStep, ..., k are fitted in turn, λ0 of the k_min nearest is the
+  * reference, and the first prefix whose λ0 exceeds kEdgeSpreadRatio times it ends the sample's face
+  * (the prefix before it). Its normal replaces the k-normal only if the two differ by more than
+  * kEdgeTurnErrors standard errors of the face's normal, sqrt(λ0 / ((m + 1) λ1)): in noise, where a
+  * narrower normal is only a noisier one, the k-normal stands. Ratios and angles only: no length
+  * enters. Per sample, so the result does not depend on the thread count.
+  * \param[in] points centred positions
+  * \param[in] graph their k-NN graph
+  * \param[in] num_threads OpenMP threads (0: default)
+  * \param[in] k_min the narrowest prefix (>= 2; nothing happens unless k > k_min)
+  * \param[in,out] normals the k-neighbourhoods' PCA normals (estimateNormals), narrowed in place
+  * \return samples whose normal was narrowed */
+std::size_t
+narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
+                      int k_min, std::vector<Eigen::Vector3f>& normals);
+
 } // namespace rspd
 } // namespace pcl

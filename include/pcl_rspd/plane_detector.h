@@ -515,6 +515,7 @@ struct DetectorStatistics
   std::size_t graph_bytes = 0;       ///< memory held by the compressed k-NN graph
   double normals_seconds = 0.0;      ///< estimating normals (0 when given and kept)
   bool given_normals_replaced = false; ///< the caller's normals were noise at the graph's scale and were estimated again (RobustPlaneSegmentation::setGivenNormalCheck)
+  std::size_t edge_narrowed_normals = 0; ///< normals narrowed to one face at an edge (RobustPlaneSegmentation::setEdgeAwareNormals)
   std::size_t depth_levels = 0;      ///< distinct depths of a quantized camera cloud that were dithered (RobustPlaneSegmentation::setDepthLevelDither); 0 = none
   double split_seconds = 0.0;        ///< split phase
   double grow_merge_seconds = 0.0;   ///< grow-merge iterations and every pass after them

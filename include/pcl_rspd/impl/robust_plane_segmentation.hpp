@@ -439,6 +439,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setCoplanarMerge (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setEdgeAwareNormals (bool enable)
+{
+  edge_aware_normals_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setNormalFit (pcl::rspd::NormalFit fit)
 {
   normal_fit_ = fit;
@@ -976,6 +983,24 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
                name, k_used_);
     pcl::rspd::estimateNormals (points_.points, graph_, params_.num_threads, points_.normals);
     stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
+  }
+  stats_.edge_narrowed_normals = 0;
+  if (!normals_ && edge_aware_normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca &&
+      normal_scale_stats_.widened () == 0)
+  {
+    // Departure (edge-aware normals): only where every normal is the k-neighbourhood's, which the
+    // narrowing compares against (a normal from a wider scale is left as it is).
+    const auto t2 = std::chrono::steady_clock::now ();
+    stats_.edge_narrowed_normals = pcl::rspd::narrowNormalsAtEdges (
+        points_.points, graph_, params_.num_threads, pcl::rspd::kMinAutomaticNeighbours, points_.normals);
+    // Normals now resolve faces down to kMinAutomaticNeighbours samples, and so may the small-plane
+    // pass's cells (k + 1 otherwise: a cell narrower than the normals' neighbourhood holds normals
+    // that agree only because they share their neighbours).
+    params_.small_cell_size = std::min<std::size_t> (params_.small_cell_size,
+                                                     static_cast<std::size_t> (pcl::rspd::kMinAutomaticNeighbours + 1));
+    stats_.normals_seconds += std::chrono::duration<double> (std::chrono::steady_clock::now () - t2).count ();
+    PCL_DEBUG ("[pcl::%s::segment] edge-aware normals: %zu of %zu narrowed to one face\n", name,
+               stats_.edge_narrowed_normals, n);
   }
   if (!normals_ && normal_fit_ == pcl::rspd::NormalFit::TrimmedPlane)
   {
