@@ -132,7 +132,7 @@ const char* const kHelp =
     "                             accurate at edges, ~20x the normal stage's time)\n"
     "  --edge-normals on|off      estimated normals narrowed to one face near an edge, where that\n"
     "                             turns them by more than noise, and small-plane cells down to 16\n"
-    "                             points (default off; finds small faces at the scale of a\n"
+    "                             points there (default off; finds small faces at the scale of a\n"
     "                             neighbourhood, but more facets of noisy curved surfaces)\n"
     "  --frame planes|axes        work along the dominant plane orientations (independent of how the\n"
     "                             cloud is rotated) or along its coordinate axes (the paper)\n"

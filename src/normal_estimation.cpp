@@ -376,8 +376,10 @@ estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const 
 
 std::size_t
 narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
-                      int k_min, std::vector<Eigen::Vector3f>& normals)
+                      int k_min, std::vector<Eigen::Vector3f>& normals, std::vector<char>* narrowed_flags)
 {
+  if (narrowed_flags)
+    narrowed_flags->assign (points.size (), 0);
   const int k = graph.k ();
   if (points.size () != normals.size () || k_min < 2 || k <= k_min)
     return 0;
@@ -438,6 +440,8 @@ narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const Neighbor
       {
         normals[i] = face_normal;
         ++narrowed;
+        if (narrowed_flags)
+          (*narrowed_flags)[i] = 1;
       }
     }
   }

@@ -103,7 +103,13 @@ public:
     if (has_planar_patch)
       return true;
 
-    // No child became a patch: test the cell itself (every level, the root included).
+    // No child became a patch: test the cell itself (every level, the root included); a cell below
+    // the coarse size only at an edge where normals were narrowed to their face (DetectorParameters::
+    // coarse_cell_size). Elsewhere its normals are k-neighbourhoods' that it is narrower than.
+    if (end - begin < params_.coarse_cell_size && points_.narrowed.size () == points_.size () &&
+        std::none_of (order_.begin () + static_cast<std::ptrdiff_t> (begin), order_.begin () + static_cast<std::ptrdiff_t> (end),
+                      [&] (std::uint32_t i) { return points_.narrowed[i] != 0; }))
+      return false;
     const std::vector<std::uint32_t> samples (order_.begin () + begin, order_.begin () + end);
     PlanarityResult r = robustPlanarityTest (points_, samples, params_);
     cells_tested_.fetch_add (1, std::memory_order_relaxed);

@@ -708,6 +708,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     std::vector<double> band = noiseBands (points, params, patches);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
+    if (params.narrowed_cell_size > 0 && params.narrowed_cell_size < params.small_cell_size &&
+        points.narrowed.size () == points.size ())
+    {
+      // Edge-aware normals: smaller cells only where the normals resolve faces that small.
+      small.min_patch_size = params.narrowed_cell_size;
+      small.coarse_cell_size = params.small_cell_size;
+    }
     for (int round = 0; round < (params.left_normal_refit ? 2 : 1); ++round)
     {
       std::vector<std::uint32_t> left;

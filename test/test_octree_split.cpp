@@ -103,6 +103,32 @@ TEST (OctreeSplit, CellsBelowEpsilonAreNotTested)
   EXPECT_EQ (stats.cells_tested, 0u);
 }
 
+TEST (OctreeSplit, CellsBelowTheCoarseSizeAreTestedOnlyAtNarrowedNormals)
+{
+  // 30 samples, cells down to 16 but a coarse size of 51 (edge-aware normals in the small-plane
+  // pass): the cell is tested only if it holds a sample whose normal was narrowed.
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 6, 5);
+  DetectorParameters p = params (16);
+  p.coarse_cell_size = 51;
+  DetectorStatistics stats;
+  EXPECT_FALSE (splitPhase (s, p, &stats).empty ()) << "no flags: every cell down to 16 is tested";
+  s.narrowed.assign (s.size (), 0);
+  stats = DetectorStatistics ();
+  EXPECT_TRUE (splitPhase (s, p, &stats).empty ());
+  EXPECT_EQ (stats.cells_tested, 0u);
+  s.narrowed[7] = 1;
+  stats = DetectorStatistics ();
+  const auto patches = splitPhase (s, p, &stats);
+  EXPECT_EQ (stats.cells_tested, 1u);
+  ASSERT_EQ (patches.size (), 1u);
+  EXPECT_EQ (patches[0].members.size (), 30u);
+  // At or above the coarse size the flags do not matter.
+  s.narrowed.assign (s.size (), 0);
+  p.coarse_cell_size = 30;
+  EXPECT_EQ (splitPhase (s, p, nullptr).size (), 1u);
+}
+
 TEST (OctreeSplit, RootIsTestedWhenNoChildCanBe)
 {
   // 40 samples, ε = 40: every child has fewer than ε, so the root itself is tested and accepted.

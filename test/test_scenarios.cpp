@@ -507,8 +507,8 @@ TEST (Scenario, CabinetAtAHundredThousandPointsNeedsEdgeAwareNormals)
   // The room at 100,000 points (seed 4): the automatic k reaches 50, whose neighbourhoods (~0.2 m)
   // bend most of the cabinet's 0.8 m top's and front's normals, and every small-plane cell of 51
   // samples there mixes them with the sides' leftovers: 10 of 12 planes (measured, F1 0.992). Normals
-  // narrowed to one face at the edges, with the small-plane pass's cells down to 16 samples, seed
-  // both: 12 of 12 (0.9985). Neither alone does (measured on seeds 1-12).
+  // narrowed to one face at the edges, with the small-plane pass's cells down to 16 samples where
+  // they hold such a normal, seed both: 12 of 12 (0.9985). Neither alone does (measured on seeds 1-12).
   pcl::rspd::SceneOptions o;
   o.num_points = 100000;
   o.seed = 4;

@@ -193,7 +193,7 @@ constexpr double kEdgeTurnErrors = 4.0;
   * \return samples whose normal was narrowed */
 std::size_t
 narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
-                      int k_min, std::vector<Eigen::Vector3f>& normals);
+                      int k_min, std::vector<Eigen::Vector3f>& normals, std::vector<char>* narrowed_flags = nullptr);
 
 } // namespace rspd
 } // namespace pcl

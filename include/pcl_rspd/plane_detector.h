@@ -86,6 +86,17 @@ struct DetectorParameters
     * plane), grow-merge again, and drop every plane still smaller than ε. Seeds a plane whose ε-sized cells always mix with a
     * neighbour. */
   std::size_t small_cell_size = 0;
+  /** \brief Departure (with edge-aware normals, PointSet::narrowed; 0 = off): the small-cell pass's
+    * cells go down to this many samples where a cell holds a sample whose normal was narrowed to its
+    * face at an edge, and to small_cell_size elsewhere. Such a cell's normals resolve a face that
+    * small; elsewhere they are k-neighbourhoods', and a cell narrower than those holds normals that
+    * agree only because they share neighbours (a facet of a noisy pipe: 12 false planes on the
+    * sweep's industrial rows with cells of 16 everywhere, 4 with this rule). */
+  std::size_t narrowed_cell_size = 0;
+  /** \brief Set by the small-cell pass for its split (not by callers): a cell smaller than this is
+    * tested only if it holds a sample whose normal was narrowed (PointSet::narrowed). 0 = every cell
+    * down to min_patch_size is tested. */
+  std::size_t coarse_cell_size = 0;
   /** \brief Departure (small seeds' MND, part of the small-cell pass): a seed the pass keeps gets at
     * least the MND of the tightest plane grown (none seeded by a noisy seed). Its 15-50 samples lie
     * in a few neighbourhoods' widths, and their normals, averaged over largely the same neighbours,

@@ -27,6 +27,9 @@ struct PointSet
   std::vector<Eigen::Vector3f> points;       ///< centred positions
   std::vector<Eigen::Vector3f> normals;      ///< unit normals (unoriented); same size as points
   std::vector<pcl::index_t> input_indices;   ///< internal index -> index in the input cloud
+  /** \brief Per sample, whether its normal was narrowed to one face at an edge
+    * (narrowNormalsAtEdges); empty when that did not run. */
+  std::vector<char> narrowed;
   Eigen::Vector3d offset = Eigen::Vector3d::Zero (); ///< input position = point + offset
 
   /** \brief Number of valid samples. */

@@ -824,7 +824,7 @@ public:
     * normal is refitted over the widest prefix of its neighbours, nearest first (down to 15), that
     * stays on one face, where that turns from the k-normal by more than its noise
     * (pcl::rspd::narrowNormalsAtEdges), and the small-plane pass's cells go down to 16 samples instead
-    * of k + 1. A small face at the scale of a k-neighbourhood is then seeded: the room at 100,000
+    * of k + 1 where they hold such a normal. A small face at the scale of a k-neighbourhood is then seeded: the room at 100,000
     * points (k = 50) finds its cabinet's top and front on 12 of 12 seeds, against 10-11 of 12
     * planes without. Off by default because it loses elsewhere: in noisy scenes with curved
     * surfaces, facets of pipes become planes, and on noisy clouds with outliers the result changes

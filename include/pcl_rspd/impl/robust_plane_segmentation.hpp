@@ -985,6 +985,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     stats_.normals_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - t1).count ();
   }
   stats_.edge_narrowed_normals = 0;
+  params_.narrowed_cell_size = 0;
   if (!normals_ && edge_aware_normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca &&
       normal_scale_stats_.widened () == 0)
   {
@@ -992,12 +993,11 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     // narrowing compares against (a normal from a wider scale is left as it is).
     const auto t2 = std::chrono::steady_clock::now ();
     stats_.edge_narrowed_normals = pcl::rspd::narrowNormalsAtEdges (
-        points_.points, graph_, params_.num_threads, pcl::rspd::kMinAutomaticNeighbours, points_.normals);
-    // Normals now resolve faces down to kMinAutomaticNeighbours samples, and so may the small-plane
-    // pass's cells (k + 1 otherwise: a cell narrower than the normals' neighbourhood holds normals
-    // that agree only because they share their neighbours).
-    params_.small_cell_size = std::min<std::size_t> (params_.small_cell_size,
-                                                     static_cast<std::size_t> (pcl::rspd::kMinAutomaticNeighbours + 1));
+        points_.points, graph_, params_.num_threads, pcl::rspd::kMinAutomaticNeighbours, points_.normals,
+        &points_.narrowed);
+    // Where normals were narrowed they resolve faces down to kMinAutomaticNeighbours samples, and so
+    // may the small-plane pass's cells there (DetectorParameters::narrowed_cell_size).
+    params_.narrowed_cell_size = params_.small_cell_size > 0 ? pcl::rspd::kMinAutomaticNeighbours + 1 : 0;
     stats_.normals_seconds += std::chrono::duration<double> (std::chrono::steady_clock::now () - t2).count ();
     PCL_DEBUG ("[pcl::%s::segment] edge-aware normals: %zu of %zu narrowed to one face\n", name,
                stats_.edge_narrowed_normals, n);
