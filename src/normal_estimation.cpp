@@ -409,7 +409,7 @@ narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const Neighbor
         fitNormal (cov, normal, ratio, &l0, &l1);
         return ratio;
       };
-      Eigen::Vector3f face_normal;
+      Eigen::Vector3f face_normal, normal;
       double reference, l0, l1;
       if (!(fitPrefix (k_min, face_normal, reference, l1) < resolved_below))
         continue; // the nearest few resolve no surface: no face to narrow to
@@ -417,16 +417,15 @@ narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const Neighbor
       double face_error = l1 > 0.0 ? std::sqrt (reference / (static_cast<double> (k_min + 1) * l1)) : HUGE_VAL;
       // The whole neighbourhood first: most samples lie on one face (its spread along the normal
       // is the noise's), and keep their k-normal after two fits.
-      Eigen::Vector3f k_normal;
+      // (Its normal is normals[i], estimateNormals' over the same neighbours; only λ0 is new here.)
       double k_spread;
-      fitPrefix (k, k_normal, k_spread, l0);
+      fitPrefix (k, normal, k_spread, l0);
       if (!(k_spread > kEdgeSpreadRatio * reference))
         continue;
       // Widen from the k_min nearest while the spread along the normal stays the noise's; the first
       // prefix beyond it reaches across an edge, the one before is the sample's face.
       for (int m = k_min + kEdgeNormalStep; m < k; m += kEdgeNormalStep)
       {
-        Eigen::Vector3f normal;
         fitPrefix (m, normal, l0, l1);
         if (l0 > kEdgeSpreadRatio * reference)
           break;

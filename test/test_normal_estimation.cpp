@@ -61,6 +61,18 @@ medianErrorDegrees (const Points& p, const Points& normals, const Eigen::Vector3
   return a[a.size () / 2];
 }
 
+/** n samples uniform in the cube [-half, half]^3 (a volume, no surface), in spatial order. */
+Points
+filledCube (std::size_t n, float half, unsigned seed)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (-half, half);
+  Points p (n);
+  for (auto& x : p)
+    x = Eigen::Vector3f (u (rng), u (rng), u (rng));
+  return inSpatialOrder (p);
+}
+
 struct Estimates
 {
   Points fixed;
@@ -202,12 +214,7 @@ TEST (NormalEstimation, VolumeWithoutSurfaceIsAccountedFor)
 {
   // A uniformly filled cube has no surface at any scale: no normal is meaningful, but every sample
   // still gets a unit normal, and the counts add up (checked in estimateBoth).
-  std::mt19937 rng (5);
-  std::uniform_real_distribution<float> u (-1.f, 1.f);
-  Points p (20000);
-  for (auto& x : p)
-    x = Eigen::Vector3f (u (rng), u (rng), u (rng));
-  p = inSpatialOrder (p);
+  const Points p = filledCube (20000, 1.f, 5);
   const Estimates e = estimateBoth (p, 30);
   for (const auto& n : e.adaptive)
     ASSERT_NEAR (n.norm (), 1.f, 1e-5f);
@@ -401,12 +408,7 @@ TEST (EdgeNormals, VolumeWithoutSurfaceIsNotNarrowed)
 {
   // Samples filling a cube: a 15-neighbourhood resolves a surface only by chance (the resolution
   // test's 5 % level), and only such a sample can be narrowed.
-  std::mt19937 rng (6);
-  std::uniform_real_distribution<float> u (-0.5f, 0.5f);
-  Points p (5000);
-  for (auto& x : p)
-    x = Eigen::Vector3f (u (rng), u (rng), u (rng));
-  p = inSpatialOrder (p);
+  const Points p = filledCube (5000, 0.5f, 6);
   const Narrowed r = narrowBoth (p, 50);
   std::printf ("    %zu of %zu narrowed\n", r.count, p.size ());
   EXPECT_LT (r.count, p.size () / 20);

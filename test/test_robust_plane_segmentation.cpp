@@ -44,6 +44,20 @@ boxCorner (int per_face = 3000, std::vector<int>* truth = nullptr, std::uint32_t
   return cloud;
 }
 
+/** The exact unit normal of each boxCorner point, from its truth label (1..3: x, y, z). */
+pcl::PointCloud<pcl::Normal>::Ptr
+exactNormals (const std::vector<int>& truth)
+{
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
+  for (const int t : truth)
+  {
+    pcl::Normal n (0, 0, 0);
+    n.normal[t - 1] = 1.0f;
+    normals->push_back (n);
+  }
+  return normals;
+}
+
 /** Share of points whose labels agree up to a relabeling (best one-to-one by majority). */
 double
 agreement (const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b)
@@ -614,13 +628,7 @@ TEST (RobustPlaneSegmentation, LeftNormalRefitIsOnForGivenNormalsOffForOwnAndSwi
   EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
   seg.setNormalFit (pcl::rspd::NormalFit::Pca);
   // The caller's normals have a switch of their own, on by default, whatever setLeftNormalRefit says.
-  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
-  for (std::size_t i = 0; i < cloud->size (); ++i)
-  {
-    pcl::Normal n (0, 0, 0);
-    n.normal[truth[i] - 1] = 1.0f;
-    normals->push_back (n);
-  }
+  const auto normals = exactNormals (truth);
   seg.setInputNormals (normals);
   seg.setLeftNormalRefit (false);
   EXPECT_TRUE (seg.getLeftNormalRefitOnGivenNormals ());
@@ -669,13 +677,7 @@ TEST (RobustPlaneSegmentation, EdgeAwareNormalsAreOffByDefaultAndOnlyForEstimate
   seg.segment (c, off);
   EXPECT_EQ (seg.getStatistics ().edge_narrowed_normals, 0u);
   seg.setNormalFit (pcl::rspd::NormalFit::Pca);
-  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>> ();
-  for (std::size_t i = 0; i < cloud->size (); ++i)
-  {
-    pcl::Normal n (0, 0, 0);
-    n.normal[truth[i] - 1] = 1.0f;
-    normals->push_back (n);
-  }
+  const auto normals = exactNormals (truth);
   seg.setInputNormals (normals);
   seg.segment (c, off);
   ASSERT_EQ (off.size (), 3u);
