@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -65,9 +65,13 @@ const char* const kHelp =
     "  --coplanar-merge on|off  a group joins another only if most of its points lie within MDP\n"
     "                   of the plane the merged group keeps (default on; off = the paper)\n"
     "  --left-normals auto|trimmed|pca  the small-plane pass splits the points it left a\n"
-    "                   second time, on the normals of their neighbourhoods' trimmed planes:\n"
-    "                   'auto' (the default) with the input's normals only, 'trimmed' with\n"
-    "                   normals estimated here by PCA too, 'pca' never (the paper)\n"
+    "                   second time, on other normals: 'auto' (the default) on those of their\n"
+    "                   neighbourhoods' trimmed planes with the input's normals, and on PCA\n"
+    "                   normals narrowed to one face at edges with normals estimated here;\n"
+    "                   'trimmed' on trimmed planes' normals with both; 'pca' never (the paper)\n"
+    "  --shifted-grid on|off  the small-plane pass also splits what it left on a second octree\n"
+    "                   whose cells are moved by a third of a cell, keeping seeds no noisier than\n"
+    "                   the planes found (default on; off = the paper's one octree)\n"
     "  --rim-retest on|once|off  in the small-plane pass, a cell failing only T3 is tested\n"
     "                   again on its inliers, and theirs while T3 still fails, and may seed a\n"
     "                   plane (default on; once = one retest; off = it seeds nothing)\n"
@@ -176,8 +180,8 @@ const char* const kHelp =
 /** Which normals the small-plane pass's second split refits (--left-normals). */
 enum class LeftNormals
 {
-  Auto,    ///< the input's normals only
-  Trimmed, ///< the input's and those estimated here
+  Auto,    ///< trimmed for the input's normals, narrowed at edges for those estimated here
+  Trimmed, ///< trimmed for the input's and those estimated here
   Pca      ///< none
 };
 
@@ -229,6 +233,7 @@ struct Options
   bool dominant_frame = true;
   bool trimmed_normals = false;
   bool edge_normals = false;
+  bool shifted_grid = true;
   pcl::rspd::FinalAssignment assignment = pcl::rspd::FinalAssignment::Tails;
   bool verbose = false;
   bool help = false;
@@ -372,6 +377,8 @@ parseArguments (int argc, char** argv)
       o.trimmed_normals = !option.choice ("pca", "trimmed");
     else if (arg == "--edge-normals")
       o.edge_normals = option.choice ("on", "off");
+    else if (arg == "--shifted-grid")
+      o.shifted_grid = option.choice ("on", "off");
     else if (arg == "--frame")
       o.dominant_frame = option.choice ("planes", "axes");
     else if (arg == "--bounded-reestimate")
@@ -567,6 +574,8 @@ run (const Options& o)
   seg.setFinalRefit (o.final_refit);
   seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
   seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);
+  seg.setLeftNormalNarrowing (o.left_normals == LeftNormals::Auto);
+  seg.setShiftedGrid (o.shifted_grid);
   seg.setConnectedParts (o.connected_parts);
   seg.setBentPlaneSplit (o.bent_split);
   seg.setLayerMerge (o.layer_merge);
@@ -603,10 +612,10 @@ run (const Options& o)
   const double t_detect = secondsSince (t0);
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
-       "pass (%zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed normals, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
+       "pass (%zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
        "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
-       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
+       stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
        stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);

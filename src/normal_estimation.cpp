@@ -291,7 +291,7 @@ estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const 
       if (!resolved[i])
         continue;
       int agree = 0, total = 0;
-      graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) {
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
         agree += resolved[j] ? 1 : 0;
         ++total;
       });
@@ -376,14 +376,15 @@ estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const 
 
 std::size_t
 narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
-                      int k_min, std::vector<Eigen::Vector3f>& normals, std::vector<char>* narrowed_flags)
+                      int k_min, std::vector<Eigen::Vector3f>& normals, std::vector<char>* narrowed_flags,
+                      const std::vector<std::uint32_t>* subset)
 {
   if (narrowed_flags)
     narrowed_flags->assign (points.size (), 0);
   const int k = graph.k ();
   if (points.size () != normals.size () || k_min < 2 || k <= k_min)
     return 0;
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (points.size ());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (subset ? subset->size () : points.size ());
   std::size_t narrowed = 0;
   const double resolved_below = isotropicEigenRatioQuantile (k_min, 0.05); // as estimateAdaptiveScaleNormals
 #pragma omp parallel num_threads(resolveThreads (num_threads)) reduction(+ : narrowed)
@@ -391,11 +392,12 @@ narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const Neighbor
     std::vector<std::pair<float, std::uint32_t>> row;
     row.reserve (static_cast<std::size_t> (k));
 #pragma omp for schedule(static, 4096)
-    for (std::ptrdiff_t i = 0; i < n; ++i)
+    for (std::ptrdiff_t s = 0; s < n; ++s)
     {
+      const std::size_t i = subset ? (*subset)[static_cast<std::size_t> (s)] : static_cast<std::size_t> (s);
       // The graph keeps a row as a set; the prefixes need it nearest first (ties by index).
       row.clear ();
-      graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) {
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
         row.emplace_back ((points[j] - points[i]).squaredNorm (), j);
       });
       std::sort (row.begin (), row.end ());

@@ -281,15 +281,26 @@ joinThickCells (const PointSet& points, const DetectorParameters& params, const 
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats,
             const std::vector<std::uint32_t>* subset, bool retest_rim_cells, std::size_t* rim_seeds,
-            std::vector<PlanarPatch>* joined_out, double thick_max_mnd)
+            std::vector<PlanarPatch>* joined_out, double thick_max_mnd, bool shifted_grid)
 {
   const bool join = params.join_thick_cells && (subset == nullptr || joined_out != nullptr);
-  OctreeSplitter splitter (points, params, subset, retest_rim_cells, join, thick_max_mnd);
+  DetectorParameters deeper;
+  if (shifted_grid)
+  {
+    deeper = params;
+    ++deeper.max_octree_depth; // the doubled root's level l + 1 is the bounding cube's level l
+  }
+  OctreeSplitter splitter (points, shifted_grid ? deeper : params, subset, retest_rim_cells, join, thick_max_mnd);
   if (splitter.size () == 0)
     return {};
   Eigen::Vector3d lo;
   double size;
   splitter.rootCell (lo, size);
+  if (shifted_grid)
+  {
+    lo -= Eigen::Vector3d::Constant (kShiftedGridOffset * size);
+    size *= 2.0;
+  }
   SplitOutput out;
 #pragma omp parallel num_threads(resolveThreads (params.num_threads))
 #pragma omp single

@@ -687,6 +687,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   std::vector<PlanarPatch> joined_left; // the small-plane pass's groups of thick cells
   PointSet refitted;                    // trimmed normals of what growth left (left_normal_refit)
   bool trimmed_seeds = false;           // a seed found on them grows on them (trimmed_seed_growth)
+  bool shifted_seeds = false;           // the shifted grid seeded a plane: judged once grown
   if (params.small_cell_size > 0 && params.small_cell_size <= params.min_patch_size && !patches.empty ())
   {
     // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
@@ -705,6 +706,19 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       if (!noisy)
         min_mnd = std::min (min_mnd, p.mnd);
     }
+    // The median MND of the planes found (noisy seeds' aside): the shifted grid's seeds' bound.
+    double median_mnd = HUGE_VAL;
+    {
+      std::vector<double> mnds;
+      for (const auto& p : patches)
+        if (!(p.retested || p.joined))
+          mnds.push_back (p.mnd);
+      if (!mnds.empty ())
+      {
+        std::nth_element (mnds.begin (), mnds.begin () + static_cast<std::ptrdiff_t> (mnds.size () / 2), mnds.end ());
+        median_mnd = mnds[mnds.size () / 2];
+      }
+    }
     std::vector<double> band = noiseBands (points, params, patches);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;
@@ -715,7 +729,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       small.min_patch_size = params.narrowed_cell_size;
       small.coarse_cell_size = params.small_cell_size;
     }
-    for (int round = 0; round < (params.left_normal_refit ? 2 : 1); ++round)
+    const bool second_split = params.left_normal_refit || params.left_normal_narrow;
+    for (int round = 0; round < (second_split ? 2 : 1); ++round)
     {
       std::vector<std::uint32_t> left;
       for (std::uint32_t i = 0; i < labels.size (); ++i)
@@ -725,7 +740,14 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       {
         if (left.empty ())
           break;
-        st.left_refitted = refitLeftNormals (points, graph, params, left, refitted);
+        if (params.left_normal_refit)
+          st.left_refitted = refitLeftNormals (points, graph, params, left, refitted);
+        else
+        {
+          refitted = points;
+          st.left_refitted = narrowNormalsAtEdges (points.points, graph, params.num_threads, kMinAutomaticNeighbours,
+                                                   refitted.normals, nullptr, &left);
+        }
       }
       const PointSet& round_points = round == 0 ? points : refitted;
       std::size_t rim_seeds = 0;
@@ -735,9 +757,32 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                                    params.small_cell_thick_join && round == 0 ? &joined_left : nullptr,
                                                    thick_bound);
       st.rim_seeds += rim_seeds;
-      std::vector<PlanarPatch> too_noisy; // turned down alone; joined below (noisy_seed_groups)
-      for (auto& seed : seeds)
+      const std::size_t first_grid_seeds = seeds.size ();
+      if (params.shifted_small_grid)
       {
+        // The shifted grid (DetectorParameters::shifted_small_grid) over what the first grid's seeds
+        // left; only seeds as clean as the planes found.
+        std::vector<char> taken (points.size (), 0);
+        for (const auto& seed : seeds)
+          for (const auto i : seed.members)
+            taken[i] = 1;
+        std::vector<std::uint32_t> untaken;
+        untaken.reserve (left.size ());
+        for (const auto i : left)
+          if (!taken[i])
+            untaken.push_back (i);
+        std::size_t shifted_rim_seeds = 0;
+        for (auto& seed : splitPhase (round_points, small, &st, &untaken, params.rim_cell_retest, &shifted_rim_seeds,
+                                      nullptr, thick_bound, true))
+          if (seed.mnd <= std::min (max_mnd, kShiftedSeedMndRatio * median_mnd) && seed.mdp <= max_mdp)
+            seeds.push_back (std::move (seed));
+        st.rim_seeds += shifted_rim_seeds;
+      }
+      std::vector<PlanarPatch> too_noisy; // turned down alone; joined below (noisy_seed_groups)
+      for (std::size_t seed_index = 0; seed_index < seeds.size (); ++seed_index)
+      {
+        PlanarPatch& seed = seeds[seed_index];
+        const bool shifted = seed_index >= first_grid_seeds;
         // Trimmed normals of scattered samples agree by chance: each is the plane of half a
         // neighbourhood. Such a seed is a slab, thicker than any plane grown (the facade at 10,000
         // points on PCL's k = 50 normals: 79 samples, three in four outliers, MND 24° within the
@@ -762,7 +807,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
           seed.mnd = min_mnd; // see DetectorParameters::small_seed_mnd_floor
           seed.cos_mnd = std::cos (min_mnd);
         }
-        seed.retested = seed.mnd > max_mnd; // let in by a retested seed: judged again once grown
+        // Let in by a retested seed, or found on the shifted grid: judged again once grown.
+        seed.retested = seed.mnd > max_mnd || shifted;
         if (round == 1 && params.trimmed_seed_growth)
         {
           // Grown on the trimmed normals, it takes the strip of a neighbouring face along their edge
@@ -779,6 +825,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         band.push_back (patches.back ().mdp); // its members' spread is not known yet: MDP
         ++st.small_seeds;
         st.small_seeds_trimmed += round;
+        st.small_seeds_shifted += shifted;
+        shifted_seeds = shifted_seeds || (shifted && patches.back ().retested);
       }
       double noisiest_seeded = 0.0; // MND of the noisiest plane a noisy seed seeded in this round
       // The groups' bounds: the noisiest and thickest plane found, then, step by step on the noise
@@ -840,11 +888,12 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     refitted = PointSet (); // read by that grow-merge alone
     dropBelowEpsilon (params, patches);
   }
-  if (st.retested_seeds > 0 || st.joined_seeds > 0 || st.small_noisy_groups > 0)
+  if (st.retested_seeds > 0 || st.joined_seeds > 0 || st.small_noisy_groups > 0 || shifted_seeds)
   {
-    // A plane an outlier seed, a group of thick cells or a group of noisy small seeds seeded: grown,
-    // it has the samples its seed may have lacked to show a bend, and it must still be flat (at
-    // 10,000 points a pipe is sampled a few times around, and its facets' seeds are too small to tell).
+    // A plane an outlier seed, a group of thick cells, a group of noisy small seeds or the shifted
+    // grid seeded: grown, it has the samples its seed may have lacked to show a bend, and it must
+    // still be flat (at 10,000 points a pipe is sampled a few times around, and its facets' seeds
+    // are too small to tell; at 20,000 the room's ball gave the shifted grid a facet of 26 samples).
     judgeNoisyPlanes (points, params, 0, patches, st);
     labels = labelSamples (points.size (), patches);
   }

@@ -392,6 +392,33 @@ TEST (EdgeNormals, SamplesNearAnEdgeGetTheirFacesNormal)
   EXPECT_LT (changed, far / 50);
 }
 
+TEST (EdgeNormals, OnASubsetOnlyItsSamplesAreNarrowed)
+{
+  // The small-plane pass narrows the normals of the samples growth left alone: each sample's result
+  // is the one the whole cloud's narrowing gives it, and the others keep their k-normals.
+  const Points p = fold (4000, 1e-4f, 1);
+  const Narrowed all = narrowBoth (p, 50);
+  pcl::rspd::NeighborGraph graph;
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 50, 2, graph));
+  std::vector<std::uint32_t> subset;
+  for (std::uint32_t i = 0; i < p.size (); i += 3)
+    subset.push_back (i);
+  Points normals = all.pca;
+  std::vector<char> flags;
+  const std::size_t count = pcl::rspd::narrowNormalsAtEdges (p, graph, 2, 15, normals, &flags, &subset);
+  EXPECT_GT (count, 0u);
+  std::size_t flagged = 0;
+  for (std::uint32_t i = 0; i < p.size (); ++i)
+  {
+    const bool in = i % 3 == 0;
+    EXPECT_EQ (normals[i], in ? all.narrowed[i] : all.pca[i]) << i;
+    if (!in)
+      EXPECT_EQ (flags[i], 0) << i;
+    flagged += flags[i] != 0;
+  }
+  EXPECT_EQ (flagged, count);
+}
+
 TEST (EdgeNormals, NoiseAloneKeepsTheKNormals)
 {
   // One noisy face, no edge (noise a third of a 50-neighbourhood's radius): a narrower normal is only

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <set>
 
@@ -127,6 +128,41 @@ TEST (OctreeSplit, CellsBelowTheCoarseSizeAreTestedOnlyAtNarrowedNormals)
   s.narrowed.assign (s.size (), 0);
   p.coarse_cell_size = 30;
   EXPECT_EQ (splitPhase (s, p, nullptr).size (), 1u);
+}
+
+TEST (OctreeSplit, ShiftedGridHoldsAFaceThatTheFirstGridCutsIntoUntestablePieces)
+{
+  // The bounding cube is [0, 1]^3 (two corner samples). A 10 x 10 face of 0.2 m centred at x = y = 0.5
+  // is cut by the first grid's level 1 into quadrants of 25 samples, below ε = 60, whose cells are not
+  // tested; the root, with a vertical face of 50 samples beside, fails. The shifted grid's cells of
+  // level 2 (edge 0.5, boundaries at 1/6 and 2/3) hold the whole face alone, and their children of
+  // level 3 (boundaries at 5/12) 81 of its samples: that cell is the seed (bottom-up).
+  PointSet s;
+  s.points = {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}};
+  s.normals = {{0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f}};
+  s.input_indices = {0, 1};
+  const auto face = rspd_test::addRectangle (s, {0.4f, 0.4f, 0.3f}, {0.2f, 0.0f, 0.0f}, {0.0f, 0.2f, 0.0f}, 10, 10);
+  rspd_test::addRectangle (s, {0.9f, 0.8f, 0.7f}, {0.0f, 0.2f, 0.0f}, {0.0f, 0.0f, 0.2f}, 10, 5);
+  const DetectorParameters p = params (60);
+  DetectorStatistics first;
+  EXPECT_TRUE (splitPhase (s, p, &first).empty ());
+  EXPECT_EQ (first.cells_tested, 1u) << "the root alone holds ε samples";
+  DetectorStatistics shifted;
+  const auto patches = splitPhase (s, p, &shifted, nullptr, false, nullptr, nullptr, HUGE_VAL, true);
+  const auto onFace = [&] (const std::vector<std::uint32_t>& members) {
+    return members.size () == 81u && std::includes (face.begin (), face.end (), members.begin (), members.end ());
+  };
+  ASSERT_EQ (patches.size (), 1u);
+  EXPECT_TRUE (onFace (patches[0].members));
+  EXPECT_NEAR (std::abs (patches[0].normal.z ()), 1.0, 1e-6);
+  EXPECT_EQ (shifted.seed_patches, 1u);
+  // On a subset the shifted grid is that subset's bounding cube's: the face and its corners alone
+  // give the same cube, and the same cell.
+  std::vector<std::uint32_t> subset = {0, 1};
+  subset.insert (subset.end (), face.begin (), face.end ());
+  const auto on_subset = splitPhase (s, p, nullptr, &subset, false, nullptr, nullptr, HUGE_VAL, true);
+  ASSERT_EQ (on_subset.size (), 1u);
+  EXPECT_TRUE (onFace (on_subset[0].members));
 }
 
 TEST (OctreeSplit, RootIsTestedWhenNoChildCanBe)

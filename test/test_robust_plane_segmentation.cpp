@@ -600,13 +600,15 @@ TEST (RobustPlaneSegmentation, PassTimesNameEachPassOnceAndSumToTheGrowMergeStag
   EXPECT_EQ (seg.getStatistics ().pass_seconds.size (), passes);
 }
 
-TEST (RobustPlaneSegmentation, LeftNormalRefitIsOnForGivenNormalsOffForOwnAndSwitchable)
+TEST (RobustPlaneSegmentation, LeftNormalsAreTrimmedForGivenNormalsNarrowedForOwnAndSwitchable)
 {
   // 60,000 samples: ε = 60, so the small-plane pass (cells down to 30) runs.
   std::vector<int> truth;
   auto cloud = boxCorner (20000, &truth);
   pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
   EXPECT_FALSE (seg.getLeftNormalRefit ());
+  EXPECT_TRUE (seg.getLeftNormalNarrowing ());
+  EXPECT_TRUE (seg.getShiftedGrid ());
   seg.setInputCloud (cloud);
   std::vector<pcl::ModelCoefficients> c;
   std::vector<pcl::PointIndices> on, off;
@@ -615,11 +617,22 @@ TEST (RobustPlaneSegmentation, LeftNormalRefitIsOnForGivenNormalsOffForOwnAndSwi
   seg.segment (c, on);
   ASSERT_EQ (on.size (), 3u);
   EXPECT_GT (seg.getStatistics ().left_refitted, 0u); // the edge bands growth left
+  // Without the trimmed refit, the normals the k-neighbourhoods' PCA gave are narrowed at the edges
+  // for the second split (setLeftNormalNarrowing, on by default); exact planes: no seed more.
   seg.setLeftNormalRefit (false);
   seg.segment (c, off);
   ASSERT_EQ (off.size (), 3u);
+  EXPECT_GT (seg.getStatistics ().left_refitted, 0u);
+  seg.setLeftNormalNarrowing (false);
+  EXPECT_FALSE (seg.getLeftNormalNarrowing ());
+  std::vector<pcl::PointIndices> none;
+  seg.segment (c, none);
+  ASSERT_EQ (none.size (), 3u);
   EXPECT_EQ (seg.getStatistics ().left_refitted, 0u);
   EXPECT_EQ (seg.getStatistics ().small_seeds_trimmed, 0u);
+  for (std::size_t p = 0; p < none.size (); ++p)
+    EXPECT_EQ (none[p].indices, off[p].indices);
+  seg.setLeftNormalNarrowing (true);
   // Not with trimmed normals everywhere.
   seg.setLeftNormalRefit (true);
   seg.setNormalFit (pcl::rspd::NormalFit::TrimmedPlane);

@@ -170,7 +170,8 @@ constexpr double kEdgeSpreadRatio = 3.0;
   * than this many standard errors of the face's normal (noise alone rarely does). */
 constexpr double kEdgeTurnErrors = 4.0;
 
-/** \brief Edge-aware normals (departure, off by default; RobustPlaneSegmentation::setEdgeAwareNormals):
+/** \brief Edge-aware normals (departure; RobustPlaneSegmentation::setEdgeAwareNormals for every
+  * sample, off by default, and setLeftNormalNarrowing for the samples the small-plane pass left, on):
   * each sample's PCA normal over the widest prefix of its neighbours, nearest first, that stays on one
   * face, where that differs from its k-neighbourhood's normal by more than noise.
   *
@@ -190,10 +191,14 @@ constexpr double kEdgeTurnErrors = 4.0;
   * \param[in] num_threads OpenMP threads (0: default)
   * \param[in] k_min the narrowest prefix (>= 2; nothing happens unless k > k_min)
   * \param[in,out] normals the k-neighbourhoods' PCA normals (estimateNormals), narrowed in place
+  * \param[out] narrowed_flags if given, per sample whether its normal was narrowed
+  * \param[in] subset if given, only these samples' normals are narrowed (the others are kept, and
+  *            flagged 0)
   * \return samples whose normal was narrowed */
 std::size_t
 narrowNormalsAtEdges (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int num_threads,
-                      int k_min, std::vector<Eigen::Vector3f>& normals, std::vector<char>* narrowed_flags = nullptr);
+                      int k_min, std::vector<Eigen::Vector3f>& normals, std::vector<char>* narrowed_flags = nullptr,
+                      const std::vector<std::uint32_t>* subset = nullptr);
 
 } // namespace rspd
 } // namespace pcl

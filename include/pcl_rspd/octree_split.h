@@ -47,13 +47,25 @@ namespace rspd
   * \param[in] thick_max_mnd a cell whose MND is above this is not kept as thick (the small-plane
   *            pass: the noisiest plane found; blobs of outliers, whose cells are as thick as wide,
   *            have MNDs up to T2's 60°)
+  * \param[in] shifted_grid the octree's cells are those of the shifted grid (kShiftedGridOffset)
+  *            instead of the bounding cube's (DetectorParameters::shifted_small_grid)
   * \return the patches, in depth-first octree order (deterministic)
   */
 std::vector<PlanarPatch>
 splitPhase (const PointSet& points, const DetectorParameters& params, DetectorStatistics* stats = nullptr,
             const std::vector<std::uint32_t>* subset = nullptr, bool retest_rim_cells = false,
             std::size_t* rim_seeds = nullptr, std::vector<PlanarPatch>* joined_out = nullptr,
-            double thick_max_mnd = HUGE_VAL);
+            double thick_max_mnd = HUGE_VAL, bool shifted_grid = false);
+
+/** \brief The shifted grid (splitPhase's shifted_grid): its root is the bounding cube doubled, with
+  * its lower corner moved back by this share of the cube's edge. Its level l + 1 then has the cells
+  * of the bounding cube's level l, each moved by a third or two thirds of a cell along every axis
+  * (2^l / 3 is never a whole number), so no boundary of any level is the first grid's; the octree is
+  * one level deeper (max_octree_depth + 1) to reach the same smallest cells. A face that every cell
+  * of the first grid cuts into pieces too small to test (0.8 m across, cells of 0.38 m) lies whole
+  * in some cell of the shifted grid's level below whenever the face is wider than two thirds of a
+  * cell of it. A share of the cube, not a length. */
+constexpr double kShiftedGridOffset = 1.0 / 3.0;
 
 } // namespace rspd
 } // namespace pcl

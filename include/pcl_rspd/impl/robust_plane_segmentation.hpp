@@ -299,6 +299,20 @@ RobustPlaneSegmentation<PointT, NormalT>::setLeftNormalRefit (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setLeftNormalNarrowing (bool enable)
+{
+  left_normal_narrowing_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setShiftedGrid (bool enable)
+{
+  shifted_grid_ = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setLeftNormalRefitOnGivenNormals (bool enable)
 {
   given_normals_left_refit_ = enable;
@@ -863,6 +877,8 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
   // Trimmed normals need no second fit; the caller's normals have a switch of their own.
   params_.left_normal_refit =
       normals_ ? given_normals_left_refit_ : left_normal_refit_ && normal_fit_ == pcl::rspd::NormalFit::Pca;
+  params_.left_normal_narrow = false; // set once the normals are known (prepareNeighbourhoods)
+  params_.shifted_small_grid = shifted_grid_;
   return true;
 }
 
@@ -1002,6 +1018,12 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
     PCL_DEBUG ("[pcl::%s::segment] edge-aware normals: %zu of %zu narrowed to one face\n", name,
                stats_.edge_narrowed_normals, n);
   }
+  // Narrowed normals for what growth left (DetectorParameters::left_normal_narrow): as the
+  // edge-aware normals, on the k-neighbourhoods' own PCA normals only, and not where every normal
+  // was narrowed already or the trimmed refit was asked for.
+  params_.left_normal_narrow = left_normal_narrowing_ && !normals_ && !params_.left_normal_refit &&
+                               !edge_aware_normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca &&
+                               normal_scale_stats_.widened () == 0;
   if (!normals_ && normal_fit_ == pcl::rspd::NormalFit::TrimmedPlane)
   {
     // Departure (robust normals): trimmed planes instead of PCA where the k-scale resolves a surface.
