@@ -291,7 +291,7 @@ estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const 
       if (!resolved[i])
         continue;
       int agree = 0, total = 0;
-      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+      graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) {
         agree += resolved[j] ? 1 : 0;
         ++total;
       });

@@ -284,13 +284,10 @@ splitPhase (const PointSet& points, const DetectorParameters& params, DetectorSt
             std::vector<PlanarPatch>* joined_out, double thick_max_mnd, bool shifted_grid)
 {
   const bool join = params.join_thick_cells && (subset == nullptr || joined_out != nullptr);
-  DetectorParameters deeper;
+  DetectorParameters grid = params;
   if (shifted_grid)
-  {
-    deeper = params;
-    ++deeper.max_octree_depth; // the doubled root's level l + 1 is the bounding cube's level l
-  }
-  OctreeSplitter splitter (points, shifted_grid ? deeper : params, subset, retest_rim_cells, join, thick_max_mnd);
+    ++grid.max_octree_depth; // the doubled root's level l + 1 is the bounding cube's level l
+  OctreeSplitter splitter (points, grid, subset, retest_rim_cells, join, thick_max_mnd);
   if (splitter.size () == 0)
     return {};
   Eigen::Vector3d lo;

@@ -685,17 +685,19 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   }
   lap ("outlier seeds");
   std::vector<PlanarPatch> joined_left; // the small-plane pass's groups of thick cells
-  PointSet refitted;                    // trimmed normals of what growth left (left_normal_refit)
+  PointSet refitted;                    // trimmed or narrowed normals of what growth left (left_normal_refit, left_normal_narrow)
   bool trimmed_seeds = false;           // a seed found on them grows on them (trimmed_seed_growth)
   bool shifted_seeds = false;           // the shifted grid seeded a plane: judged once grown
   if (params.small_cell_size > 0 && params.small_cell_size <= params.min_patch_size && !patches.empty ())
   {
     // Small-cell pass (departure, see DetectorParameters::small_cell_size): on the PCA normals, then
-    // (left_normal_refit) on the trimmed normals of the samples still left.
+    // on the trimmed (left_normal_refit) or narrowed (left_normal_narrow) normals of the samples
+    // still left; each split also on the shifted grid (shifted_small_grid).
     // The noisiest plane grown, the noisiest plane a noisy seed seeded (a retested outlier seed,
     // not grown yet, or a thick-cell group), and the tightest plane grown: a small seed's MND floor.
     // ... and the thickest (MDP) plane grown, which bounds the seeds on trimmed normals.
     double max_mnd = 0.0, max_retested_mnd = 0.0, min_mnd = HUGE_VAL, max_mdp = 0.0;
+    std::vector<double> mnds; // of the planes grown: their median bounds the shifted grid's seeds
     for (const auto& p : patches)
     {
       max_mdp = std::max (max_mdp, p.mdp);
@@ -704,21 +706,12 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       double& bound = noisy ? max_retested_mnd : max_mnd;
       bound = std::max (bound, p.mnd);
       if (!noisy)
-        min_mnd = std::min (min_mnd, p.mnd);
-    }
-    // The median MND of the planes found (noisy seeds' aside): the shifted grid's seeds' bound.
-    double median_mnd = HUGE_VAL;
-    {
-      std::vector<double> mnds;
-      for (const auto& p : patches)
-        if (!(p.retested || p.joined))
-          mnds.push_back (p.mnd);
-      if (!mnds.empty ())
       {
-        std::nth_element (mnds.begin (), mnds.begin () + static_cast<std::ptrdiff_t> (mnds.size () / 2), mnds.end ());
-        median_mnd = mnds[mnds.size () / 2];
+        min_mnd = std::min (min_mnd, p.mnd);
+        mnds.push_back (p.mnd);
       }
     }
+    const double median_mnd = mnds.empty () ? HUGE_VAL : medianInPlace (mnds);
     std::vector<double> band = noiseBands (points, params, patches);
     DetectorParameters small = params;
     small.min_patch_size = params.small_cell_size;

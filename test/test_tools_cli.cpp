@@ -302,6 +302,10 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_left_auto.pcd", {"--left-normals", "auto"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_shifted_on.pcd", {"--shifted-grid", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_shifted_off.pcd", {"--shifted-grid=off"}));
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--shifted-grid", "maybe"}).status, 2);
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--shifted-grid"}).status, 2);
+  const auto verbose = runTool (segment, {dir.file ("r.pcd"), "-o", dir.file ("room_v.pcd"), "-v"});
+  EXPECT_NE (verbose.err.find ("on the shifted grid"), std::string::npos) << verbose.err;
   EXPECT_FALSE (room == labels ("r.pcd", "room_left_trimmed.pcd", {"--left-normals=trimmed"}));
   // The plane support releases the facade's in-band outliers beyond its rims.
   ASSERT_EQ (runTool (make, {"facade", dir.file ("f"), "-n", "60000"}).status, 0);
