@@ -32,7 +32,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
-    " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -158,6 +158,11 @@ const char* const kHelp =
     "  --curved-fold-sides on|off  normals turning in steps spare a plane the check calls curved\n"
     "                   only if it has 2 eps points, enough for the bent-plane split to cut it\n"
     "                   into two faces (default on; off = at every size)\n"
+    "  --tube-check on|off  the check drops a plane as thick as half its narrow side, a thin\n"
+    "                   pipe's points from every side folded onto one plane (default on; off =\n"
+    "                   judged as other planes)\n"
+    "  --curved-parts on|off  the check judges the parts the bent-plane split cut as it judges\n"
+    "                   planes (default on; off = kept unjudged)\n"
     "  --hinge-normals on|off  a seed or group of cells is bent at an edge (and seeds nothing)\n"
     "                   only if its two sides' normals turn by more than 15 degrees as their\n"
     "                   planes do (default on; off = positions alone)\n"
@@ -225,6 +230,8 @@ struct Options
   bool curved_check = true;
   bool curved_turn = true;
   bool curved_fold_sides = true;
+  bool tube_check = true;
+  bool curved_parts = true;
   bool bend_noise_test = true;
   bool drop_outlier_seeds = true;
   bool retest_outlier_seeds = true;
@@ -399,6 +406,10 @@ parseArguments (int argc, char** argv)
       o.curved_turn = option.choice ("on", "off");
     else if (arg == "--curved-fold-sides")
       o.curved_fold_sides = option.choice ("on", "off");
+    else if (arg == "--tube-check")
+      o.tube_check = option.choice ("on", "off");
+    else if (arg == "--curved-parts")
+      o.curved_parts = option.choice ("on", "off");
     else if (arg == "--hinge-normals")
       o.hinge_normals = option.choice ("on", "off");
     else if (arg == "--bend-test")
@@ -585,6 +596,8 @@ run (const Options& o)
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setCurvedNormalTurn (o.curved_turn);
   seg.setCurvedFoldTwoSides (o.curved_fold_sides);
+  seg.setCurvedTubeCheck (o.tube_check);
+  seg.setCurvedSplitParts (o.curved_parts);
   seg.setBendNoiseTest (o.bend_noise_test);
   seg.setDropOutlierSeeds (o.drop_outlier_seeds);
   seg.setOutlierSeedRetest (o.retest_outlier_seeds);
@@ -613,10 +626,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu kept by the small-plane "
        "pass (%zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu split at an edge (%zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.small_seeds, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.bent_planes, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved, stats.edge_released, stats.step_moved, stats.unsupported, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)

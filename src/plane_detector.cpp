@@ -358,29 +358,47 @@ judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std:
   patches.resize (kept);
 }
 
-/** Drop every plane that is a facet of a curved surface (departure, see
-  * DetectorParameters::min_curvature_share). \return planes dropped */
+/** Whether a plane is a facet of a curved surface or a tube (departure, see
+  * DetectorParameters::min_curvature_share, curved_tube_check). \a tube is set when it is a tube. */
+bool
+isCurvedFacet (const PointSet& points, const DetectorParameters& params, const PlanarPatch& patch, bool& tube)
+{
+  const std::vector<std::uint32_t>& members = patch.members;
+  const PlaneCurvature c = measureCurvature (points, members);
+  tube = params.curved_tube_check && isTube (c, patch.mdp);
+  if (tube)
+    return true;
+  const bool bent = isCurvedPatch (c, patch.mnd, params) ||
+                    (params.curved_normal_turn &&
+                     isCurvedByNormals (c, normalTurnAcross (points, members, c), patch.mnd, params));
+  if (!bent)
+    return false;
+  // The fold ratio keeps a plane for the bent-plane split, which cuts sides of ε samples each: one
+  // of fewer than 2ε samples that bends beyond chance at the normals' path's confidence is no such
+  // fold (DetectorParameters::curved_fold_two_sides).
+  const bool too_small_to_fold = params.curved_fold_two_sides && members.size () < 2 * params.min_patch_size &&
+                                 c.share >= chanceBendShare (c.samples, params.curved_turn_confidence);
+  return too_small_to_fold || normalTurnRatio (points, members, c) < params.curved_fold_ratio;
+}
+
+/** Drop every plane that is a facet of a curved surface (isCurvedFacet); with \a judged, only the
+  * planes it marks are judged, and it is kept in step with the planes kept. \a tubes counts the tubes
+  * dropped. \return planes dropped */
 std::size_t
-dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches)
+dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std::vector<PlanarPatch>& patches,
+                  std::size_t& tubes, std::vector<char>* judged = nullptr)
 {
   std::vector<char> curved (patches.size (), 0);
+  std::vector<char> tube (patches.size (), 0);
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (patches.size ());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (params.num_threads))
   for (std::ptrdiff_t p = 0; p < count; ++p)
   {
-    const std::vector<std::uint32_t>& members = patches[p].members;
-    const PlaneCurvature c = measureCurvature (points, members);
-    const bool bent = isCurvedPatch (c, patches[p].mnd, params) ||
-                      (params.curved_normal_turn &&
-                       isCurvedByNormals (c, normalTurnAcross (points, members, c), patches[p].mnd, params));
-    if (!bent)
+    if (judged && !(*judged)[p])
       continue;
-    // The fold ratio keeps a plane for the bent-plane split, which cuts sides of ε samples each: one
-    // of fewer than 2ε samples that bends beyond chance at the normals' path's confidence is no such
-    // fold (DetectorParameters::curved_fold_two_sides).
-    const bool too_small_to_fold = params.curved_fold_two_sides && members.size () < 2 * params.min_patch_size &&
-                                   c.share >= chanceBendShare (c.samples, params.curved_turn_confidence);
-    curved[p] = too_small_to_fold || normalTurnRatio (points, members, c) < params.curved_fold_ratio;
+    bool is_tube = false;
+    curved[p] = isCurvedFacet (points, params, patches[p], is_tube);
+    tube[p] = is_tube;
   }
   std::size_t dropped = 0;
   std::size_t kept = 0;
@@ -389,13 +407,20 @@ dropCurvedPlanes (const PointSet& points, const DetectorParameters& params, std:
     if (curved[p])
     {
       ++dropped;
+      tubes += tube[p];
       continue;
     }
     if (kept != p)
+    {
       patches[kept] = std::move (patches[p]);
+      if (judged)
+        (*judged)[kept] = (*judged)[p];
+    }
     ++kept;
   }
   patches.resize (kept);
+  if (judged)
+    judged->resize (kept);
   return dropped;
 }
 
@@ -932,7 +957,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
 
   lap ("connected parts");
   if (params.curved_plane_check)
-    st.curved_planes = dropCurvedPlanes (points, params, patches);
+    st.curved_planes = dropCurvedPlanes (points, params, patches, st.curved_tubes);
 
   lap ("curved check");
   if (params.bent_plane_split && !patches.empty ())
@@ -941,6 +966,10 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // which judges whole facets of a curved surface, not the parts a split would leave.
     std::vector<char> split;
     st.bent_planes = splitBentPlanes (points, params, patches, &split);
+    if (params.curved_plane_check && params.curved_split_parts && st.bent_planes > 0)
+      // The parts judged as planes are (DetectorParameters::curved_split_parts), before the join,
+      // which would make a facet whole again.
+      st.curved_parts = dropCurvedPlanes (points, params, patches, st.curved_tubes, &split);
     st.bent_joined = joinSplitFaces (points, graph, params, patches, split);
   }
 

@@ -4,6 +4,8 @@
  */
 #include "cli_helpers.h"
 
+#include <pcl/common/io.h>
+#include <pcl/features/normal_3d.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
@@ -314,6 +316,30 @@ TEST (SegmentCli, DepartureSwitches)
   const std::string industrial = labels ("i.pcd", "ind.pcd", {"--outlier-seeds", "keep", "--curved-check", "off"});
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_curved.pcd", {"--outlier-seeds", "keep"}));
   EXPECT_FALSE (industrial == labels ("i.pcd", "ind_seeds.pcd", {"--curved-check=off"}));
+  // On PCL's k = 50 normals in the file, the tube check drops a thin pipe's ribbon (industrial at
+  // 30,000 points, seed 5); the parts the bent-plane split cut are judged as planes.
+  ASSERT_EQ (runTool (make, {"industrial", dir.file ("i30"), "-n", "30000", "--seed", "5"}).status, 0);
+  {
+    auto xyz = std::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+    ASSERT_EQ (pcl::io::loadPCDFile (dir.file ("i30.pcd"), *xyz), 0);
+    pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
+    estimation.setInputCloud (xyz);
+    estimation.setKSearch (50);
+    pcl::PointCloud<pcl::Normal> normals;
+    estimation.compute (normals);
+    pcl::PointCloud<pcl::PointNormal> with_normals;
+    pcl::concatenateFields (*xyz, normals, with_normals);
+    ASSERT_EQ (pcl::io::savePCDFileBinary (dir.file ("i30n.pcd"), with_normals), 0);
+  }
+  const std::string pipes = labels ("i30n.pcd", "i30n_out.pcd", {});
+  EXPECT_TRUE (pipes == labels ("i30n.pcd", "i30n_tube_on.pcd", {"--tube-check", "on", "--curved-parts=on"}));
+  EXPECT_FALSE (pipes == labels ("i30n.pcd", "i30n_tube_off.pcd", {"--tube-check=off"}));
+  labels ("i30n.pcd", "i30n_parts_off.pcd", {"--curved-parts", "off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("i30n.pcd"), "--tube-check", "yes"}).status, 2);
+  EXPECT_EQ (runTool (segment, {dir.file ("i30n.pcd"), "--curved-parts"}).status, 2);
+  const auto tubes = runTool (segment, {dir.file ("i30n.pcd"), "-v"});
+  EXPECT_NE (tubes.err.find ("tubes among them"), std::string::npos) << tubes.err;
+  EXPECT_EQ (tubes.err.find ("(0 tubes"), std::string::npos) << tubes.err;
   // Bends tested against noise (the default) keep faces of sparse boxes.
   ASSERT_EQ (runTool (make, {"boxes", dir.file ("b"), "-n", "30000"}).status, 0);
   EXPECT_FALSE (labels ("b.pcd", "boxes.pcd", {}) == labels ("b.pcd", "boxes_share.pcd", {"--bend-test", "share"}));

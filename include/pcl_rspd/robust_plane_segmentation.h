@@ -707,6 +707,25 @@ public:
   bool
   getCurvedFoldTwoSides () const { return params_.curved_fold_two_sides; }
 
+  /** \brief The curved-surface check drops a plane as thick as a tube (its noise band at least half
+    * its narrow side: a thin pipe's samples from every side) whatever its quadric and normals say
+    * (default true; false = tubes judged as other planes). See
+    * pcl::rspd::DetectorParameters::curved_tube_check. */
+  void
+  setCurvedTubeCheck (bool enable);
+  /** \brief Whether the curved-surface check drops tubes. */
+  bool
+  getCurvedTubeCheck () const { return params_.curved_tube_check; }
+
+  /** \brief The curved-surface check judges the parts the bent-plane split cut, as it judges planes
+    * (default true; false = the parts kept unjudged). See
+    * pcl::rspd::DetectorParameters::curved_split_parts. */
+  void
+  setCurvedSplitParts (bool enable);
+  /** \brief Whether the curved-surface check judges the bent-plane split's parts. */
+  bool
+  getCurvedSplitParts () const { return params_.curved_split_parts; }
+
   /** \brief Small seeds' MND floor (default true; false = a seed's own MND): a seed of the
     * small-plane pass gets at least the MND of the tightest plane grown, since the normals of its few
     * samples share most of their neighbours and agree better than its plane's do. See

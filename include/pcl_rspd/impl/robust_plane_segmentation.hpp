@@ -516,6 +516,20 @@ RobustPlaneSegmentation<PointT, NormalT>::setCurvedFoldTwoSides (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setCurvedTubeCheck (bool enable)
+{
+  params_.curved_tube_check = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setCurvedSplitParts (bool enable)
+{
+  params_.curved_split_parts = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedNormalTurn (bool enable)
 {
   params_.curved_normal_turn = enable;
