@@ -495,10 +495,11 @@ struct DetectorParameters
   /** \brief Departure (curved-surface check): the parts the bent-plane split cut are judged by the
     * check again, as planes are. A plane the fold ratio kept for the split as a fold may be a facet
     * whose normals turn in steps only because they are blurred; cut, its parts bend as much as it did
-    * (the room at 20,000 points, σ 1.2 cm, seed 43, on PCL's k = 50 normals: a ball facet of 74
+    * (the room at 20,000 points, σ 1.2 cm, seed 43, on PCL's k = 50 normals: a pillar facet of 74
     * samples, share 0.88 and half-bend 0.67 rad against MND 0.16, fold ratio 0.92; its parts of 41
-    * and 33 samples, shares 0.46 and 0.59, half-bends 0.43 and 0.49 rad, fewer than 2ε). Faces cut
-    * apart at a real fold are flat and stay. false = the parts kept unjudged (before the thirty-third
+    * and 33 samples, shares 0.46 and 0.59, half-bends 0.43 and 0.49 rad, fold ratios 1.1; the part
+    * under 2ε = 40 goes, the other is spared as a fold again and stays). Faces cut apart at a real
+    * fold are flat and stay. false = the parts kept unjudged (before the thirty-third
     * session). */
   bool curved_split_parts = true;
   /** \brief The confidence of the noise test in the normals' path of the curved-surface check
