@@ -105,9 +105,9 @@ reestimateGrownPatches (const PointSet& points, const DetectorParameters& params
       patch.estimate_size = patch.members.size (); // keep the old plane; do not retry forever
       continue;
     }
-    // A noisy seed's plane whose new MND fails T2 has run onto the faces around it (see
+    // A plane whose new MND fails T2 has run onto the faces around it (see
     // DetectorParameters::bounded_reestimation); one past T2 already has no estimate within it to keep.
-    if (params.bounded_reestimation && patch.retested && patch.mnd < params.max_normal_deviation &&
+    if (params.bounded_reestimation && patch.mnd < params.max_normal_deviation &&
         estimate.mnd () >= params.max_normal_deviation)
     {
       ++refused;

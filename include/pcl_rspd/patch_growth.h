@@ -62,8 +62,8 @@ growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<Pla
 
 /** \brief Sec. 3.5: re-estimate C, N, MDP and MND of every patch that grew by more than
   * DetectorParameters::update_growth_ratio since its last estimate. Members are kept; T1-T3 are not
-  * re-run, but with DetectorParameters::bounded_reestimation a plane a noisy seed seeded keeps its
-  * last estimate when the new one fails T2. Thread-count independent (patches are independent).
+  * re-run, but with DetectorParameters::bounded_reestimation a plane keeps its last estimate when
+  * the new one fails T2. Thread-count independent (patches are independent).
   * \param[in] points samples
   * \param[in] params constants
   * \param[in,out] patches patches; each one measured is marked as estimated at its current size

@@ -736,12 +736,12 @@ public:
   bool
   getSmallSeedMndFloor () const { return params_.small_seed_mnd_floor; }
 
-  /** \brief Re-estimation within T2 (default true; false = the paper): a plane a noisy seed seeded
-    * (an outlier seed tested again, a small-plane seed as noisy) keeps its last estimate when a
-    * re-estimate (Sec. 3.5) fails T2. See pcl::rspd::DetectorParameters::bounded_reestimation. */
+  /** \brief Re-estimation within T2 (default true; false = the paper): a plane keeps its last
+    * estimate when a re-estimate (Sec. 3.5) fails T2 (only noisy seeds' planes until issue #6's
+    * thirty-third session). See pcl::rspd::DetectorParameters::bounded_reestimation. */
   void
   setBoundedReestimation (bool enable);
-  /** \brief Whether noisy seeds' planes keep an estimate within T2. */
+  /** \brief Whether planes keep an estimate within T2. */
   bool
   getBoundedReestimation () const { return params_.bounded_reestimation; }
 
