@@ -578,7 +578,7 @@ struct DetectorStatistics
   std::size_t thick_rebound = 0;     ///< small-plane passes whose thick cells were collected again (thick_cells_follow_noisy_seeds)
   std::size_t below_epsilon = 0;     ///< planes the passes after growth left with fewer than ε samples, dropped
   std::size_t curved_planes = 0;     ///< planes dropped by the residual-pattern check
-  std::size_t curved_tubes = 0;      ///< of those, tubes (DetectorParameters::curved_tube_check)
+  std::size_t curved_tubes = 0;      ///< tubes among curved_planes and curved_parts (DetectorParameters::curved_tube_check)
   std::size_t curved_parts = 0;      ///< parts of bent planes the check dropped once cut (curved_split_parts)
   bool hit_iteration_cap = false;
   double prepare_seconds = 0.0;      ///< valid samples, centring, spatial order (wall time)
