@@ -42,9 +42,11 @@ class OctreeSplitter
 public:
   OctreeSplitter (const PointSet& points, const DetectorParameters& params, const std::vector<std::uint32_t>* subset,
                   bool retest_rim_cells, bool keep_thick_cells, double thick_max_mnd)
-    : points_ (points), params_ (params), retest_rim_cells_ (retest_rim_cells), keep_thick_cells_ (keep_thick_cells),
-      thick_max_mnd_ (thick_max_mnd), subset_ (subset != nullptr)
+    : points_ (points), params_ (params), retest_params_ (params), retest_rim_cells_ (retest_rim_cells),
+      keep_thick_cells_ (keep_thick_cells), thick_max_mnd_ (thick_max_mnd), subset_ (subset != nullptr)
   {
+    if (params.rim_retest_min_size > 0)
+      retest_params_.min_patch_size = std::min (params.min_patch_size, params.rim_retest_min_size);
     if (subset)
       order_ = *subset;
     else
@@ -118,10 +120,11 @@ public:
       // The inliers of the cell's own estimate (the test drops them when it fails), tested again.
       // Until stable (DetectorParameters::rim_retest_until_stable): each estimate on cleaner
       // inliers is tighter, so the rim's bent normals fall out a step at a time.
+      // Down to rim_retest_min_size inliers on narrowed normals (DetectorParameters::narrowed_rim_retest).
       std::vector<std::uint32_t> inliers = intervalInliers (points_, samples, r.estimate);
-      while (inliers.size () >= params_.min_patch_size)
+      while (inliers.size () >= retest_params_.min_patch_size)
       {
-        r = robustPlanarityTest (points_, inliers, params_);
+        r = robustPlanarityTest (points_, inliers, retest_params_);
         if (r.verdict == PlanarityVerdict::Planar)
           rim_seeds_.fetch_add (1, std::memory_order_relaxed);
         if (r.verdict != PlanarityVerdict::TooManyOutliers || !params_.rim_retest_until_stable)
@@ -212,6 +215,7 @@ private:
 
   const PointSet& points_;
   const DetectorParameters& params_;
+  DetectorParameters retest_params_; ///< params_ with min_patch_size lowered for a rim cell's inliers
   const bool retest_rim_cells_;
   const bool keep_thick_cells_;
   const double thick_max_mnd_;

@@ -96,7 +96,8 @@ struct RobustPlane
   *    be as clean as the planes found, and are judged flat again once grown;
   *  - narrowed normals for what growth left (setLeftNormalNarrowing(false) for none): with normals
   *    estimated here by PCA, that pass's second split reads the left samples' normals narrowed to
-  *    one face at edges (the trimmed ones below when setLeftNormalRefit asks for them);
+  *    one face at edges (the trimmed ones below when setLeftNormalRefit asks for them); there a
+  *    rim cell's inliers are tested again down to 16 of them (setNarrowedRimRetest(false): k + 1);
   *  - trimmed normals for what growth left (setLeftNormalRefitOnGivenNormals(false) and
   *    setLeftNormalRefit(false) for the paper): that pass
   *    splits a second time the samples still left, on the normals of their neighbourhoods'
@@ -461,6 +462,16 @@ public:
   /** \brief Whether rim cells are retested until stable. */
   bool
   getRimRetestUntilStable () const { return params_.rim_retest_until_stable; }
+
+  /** \brief Rim cells on narrowed normals (default true; false = inliers as many as the cells): in the
+    * small-plane pass's second split, on normals narrowed to one face at edges, a rim cell's inliers
+    * are tested again down to 16 of them, the faces those normals resolve, instead of k + 1. See
+    * pcl::rspd::DetectorParameters::narrowed_rim_retest. */
+  void
+  setNarrowedRimRetest (bool enable);
+  /** \brief Whether rim cells' inliers on narrowed normals are tested down to 16 of them. */
+  bool
+  getNarrowedRimRetest () const { return params_.narrowed_rim_retest; }
 
   /** \brief Normals turn at a hinge (default true; false = positions alone): a seed or a group of
     * cells is bent at an edge, and seeds nothing, only if its two sides' mean normals turn by more

@@ -341,6 +341,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setRimRetestUntilStable (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNarrowedRimRetest (bool enable)
+{
+  params_.narrowed_rim_retest = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setHingeNormalTurn (bool enable)
 {
   params_.hinge_normal_turn = enable;
