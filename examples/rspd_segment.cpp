@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--narrowed-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -75,9 +75,10 @@ const char* const kHelp =
     "  --rim-retest on|once|off  in the small-plane pass, a cell failing only T3 is tested\n"
     "                   again on its inliers, and theirs while T3 still fails, and may seed a\n"
     "                   plane (default on; once = one retest; off = it seeds nothing)\n"
-    "  --narrowed-retest on|off  on the narrowed normals of what growth left, a rim cell's\n"
-    "                   inliers are tested again down to 16 of them, the faces those normals\n"
-    "                   resolve, instead of k + 1 (default on; off = as many as the cells)\n"
+    "  --left-retest on|off  on the narrowed or trimmed normals of what growth left (see\n"
+    "                   --left-normals), a rim cell's inliers are tested again down to 16 of them,\n"
+    "                   the faces narrowed normals resolve, instead of k + 1 (default on;\n"
+    "                   off = as many as the cells)\n"
     "  --release on|off once growth is stable, members farther than 3 robust sigma from their\n"
     "                   plane are offered to the neighbouring planes (default on; off = the paper:\n"
     "                   members are never revoked)\n"
@@ -210,7 +211,7 @@ struct Options
   bool coplanar_merge = true;
   bool rim_retest = true;
   bool rim_retest_until_stable = true;
-  bool narrowed_retest = true;
+  bool left_retest = true;
   bool hinge_normals = true;
   bool release = true;
   bool released_planes = true;
@@ -336,8 +337,8 @@ parseArguments (int argc, char** argv)
       o.rim_retest = v != "off";
       o.rim_retest_until_stable = v == "on";
     }
-    else if (arg == "--narrowed-retest")
-      o.narrowed_retest = option.choice ("on", "off");
+    else if (arg == "--left-retest")
+      o.left_retest = option.choice ("on", "off");
     else if (arg == "--release")
       o.release = option.choice ("on", "off");
     else if (arg == "--released-planes")
@@ -576,7 +577,7 @@ run (const Options& o)
   seg.setCoplanarMerge (o.coplanar_merge);
   seg.setRimCellRetest (o.rim_retest);
   seg.setRimRetestUntilStable (o.rim_retest_until_stable);
-  seg.setNarrowedRimRetest (o.narrowed_retest);
+  seg.setLeftRimRetest (o.left_retest);
   seg.setHingeNormalTurn (o.hinge_normals);
   seg.setFarMemberRelease (o.release);
   seg.setReleasedPlaneSeeding (o.released_planes);

@@ -120,7 +120,7 @@ public:
       // The inliers of the cell's own estimate (the test drops them when it fails), tested again.
       // Until stable (DetectorParameters::rim_retest_until_stable): each estimate on cleaner
       // inliers is tighter, so the rim's bent normals fall out a step at a time.
-      // Down to rim_retest_min_size inliers on narrowed normals (DetectorParameters::narrowed_rim_retest).
+      // Down to rim_retest_min_size inliers on the left samples' own normals (DetectorParameters::left_rim_retest).
       std::vector<std::uint32_t> inliers = intervalInliers (points_, samples, r.estimate);
       while (inliers.size () >= retest_params_.min_patch_size)
       {

@@ -768,9 +768,9 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
         }
       }
       const PointSet& round_points = round == 0 ? points : refitted;
-      // On narrowed normals a rim cell's inliers may be as few as the faces those normals resolve
-      // (DetectorParameters::narrowed_rim_retest).
-      small.rim_retest_min_size = round == 1 && !params.left_normal_refit && params.narrowed_rim_retest
+      // On the left samples' narrowed or trimmed normals a rim cell's inliers may be as few as the
+      // faces narrowed normals resolve (DetectorParameters::left_rim_retest).
+      small.rim_retest_min_size = round == 1 && params.left_rim_retest
                                       ? static_cast<std::size_t> (kMinAutomaticNeighbours) + 1
                                       : 0;
       std::size_t rim_seeds = 0;

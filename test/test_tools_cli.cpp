@@ -281,9 +281,9 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_rim_on.pcd", {"--rim-retest", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_rim_off.pcd", {"--rim-retest=off"}));
   labels ("r.pcd", "room_rim_once.pcd", {"--rim-retest", "once"}); // accepted (status 0)
-  EXPECT_TRUE (room == labels ("r.pcd", "room_narrowed_retest_on.pcd", {"--narrowed-retest", "on"}));
-  labels ("r.pcd", "room_narrowed_retest_off.pcd", {"--narrowed-retest=off"}); // accepted (status 0)
-  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--narrowed-retest", "yes"}).status, 2);
+  EXPECT_TRUE (room == labels ("r.pcd", "room_left_retest_on.pcd", {"--left-retest", "on"}));
+  labels ("r.pcd", "room_left_retest_off.pcd", {"--left-retest=off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--left-retest", "yes"}).status, 2);
   EXPECT_TRUE (room == labels ("r.pcd", "room_release_on.pcd", {"--release", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_release_off.pcd", {"--release=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_sides_on.pcd", {"--edge-sides", "on"}));

@@ -105,9 +105,9 @@ struct DetectorParameters
     * tested only if it holds a sample whose normal was narrowed (PointSet::narrowed). 0 = every cell
     * down to min_patch_size is tested. */
   std::size_t coarse_cell_size = 0;
-  /** \brief Set by the small-cell pass for its split on narrowed normals (not by callers; 0 = off): a
-    * rim cell's inliers (rim_cell_retest) are tested again while at least this many, instead of
-    * min_patch_size. See narrowed_rim_retest. */
+  /** \brief Set by the small-cell pass for its second split (not by callers; 0 = off): a rim cell's
+    * inliers (rim_cell_retest) are tested again while at least this many, instead of
+    * min_patch_size. See left_rim_retest. */
   std::size_t rim_retest_min_size = 0;
   /** \brief Departure (small seeds' MND, part of the small-cell pass): a seed the pass keeps gets at
     * least the MND of the tightest plane grown (none seeded by a noisy seed). Its 15-50 samples lie
@@ -246,16 +246,17 @@ struct DetectorParameters
     * that rim 28 % outliers, and the side (521 samples, σ 2 mm, 5 % outliers in the scene) was
     * seeded by no cell. false = one retest. */
   bool rim_retest_until_stable = true;
-  /** \brief Departure (part of rim_cell_retest, with left_normal_narrow): in the small-cell pass's
-    * second split, whose normals are narrowed to one face at edges and so resolve faces of
-    * kMinAutomaticNeighbours samples, a rim cell's inliers are tested again down to
-    * kMinAutomaticNeighbours + 1 of them (the least cell the edge-aware normals test) instead of the
-    * pass's k + 1; the plane they seed must still grow to ε. A small face bordered by others on most
-    * sides keeps a quarter or more of bent normals in every cell of k + 1 samples: the room at 60,000
-    * points (seed 5, k = 30) had its cabinet's top (154 samples, ε = 60) in a cell of 41 samples whose
-    * 26 inliers on narrowed normals were the top's alone, and no other seed. false = inliers as many
-    * as the pass's cells. */
-  bool narrowed_rim_retest = true;
+  /** \brief Departure (part of rim_cell_retest, in the small-cell pass's second split, on the left
+    * samples' narrowed (left_normal_narrow) or trimmed (left_normal_refit) normals): a rim cell's
+    * inliers are tested again down to kMinAutomaticNeighbours + 1 of them (the faces narrowed normals
+    * resolve, the least cell the edge-aware normals test) instead of the pass's k + 1; the plane they
+    * seed must still grow to ε. A small face bordered by others on most sides keeps a quarter or more
+    * of bent normals in every cell of k + 1 samples: the room at 60,000 points (seed 5, k = 30) had
+    * its cabinet's top (154 samples, ε = 60) in a cell of 41 samples whose 26 inliers on narrowed
+    * normals were the top's alone, and no other seed; on PCL's k = 50 normals (trimmed for the second
+    * split) the top of the rooms at 60,000 (seed 3) and 80,000 points (seeds 2 and 5) likewise.
+    * false = inliers as many as the pass's cells. */
+  bool left_rim_retest = true;
   /** \brief Departure (outlier seeds): after the split, a seed whose MND is an outlier among all
     * seeds (log MND above median + α·MAD of the seeds' log MND) is dropped before growth. A coarse
     * cell can pass T1-T3 when its extent dwarfs a thick mix of surfaces (a rotated facade: a cell

@@ -96,8 +96,9 @@ struct RobustPlane
   *    be as clean as the planes found, and are judged flat again once grown;
   *  - narrowed normals for what growth left (setLeftNormalNarrowing(false) for none): with normals
   *    estimated here by PCA, that pass's second split reads the left samples' normals narrowed to
-  *    one face at edges (the trimmed ones below when setLeftNormalRefit asks for them); there a
-  *    rim cell's inliers are tested again down to 16 of them (setNarrowedRimRetest(false): k + 1);
+  *    one face at edges (the trimmed ones below when setLeftNormalRefit asks for them); there, as
+  *    on trimmed normals, a rim cell's inliers are tested again down to 16 of them
+  *    (setLeftRimRetest(false): k + 1);
   *  - trimmed normals for what growth left (setLeftNormalRefitOnGivenNormals(false) and
   *    setLeftNormalRefit(false) for the paper): that pass
   *    splits a second time the samples still left, on the normals of their neighbourhoods'
@@ -463,15 +464,15 @@ public:
   bool
   getRimRetestUntilStable () const { return params_.rim_retest_until_stable; }
 
-  /** \brief Rim cells on narrowed normals (default true; false = inliers as many as the cells): in the
-    * small-plane pass's second split, on normals narrowed to one face at edges, a rim cell's inliers
-    * are tested again down to 16 of them, the faces those normals resolve, instead of k + 1. See
-    * pcl::rspd::DetectorParameters::narrowed_rim_retest. */
+  /** \brief Rim cells on the left samples' normals (default true; false = inliers as many as the
+    * cells): in the small-plane pass's second split, on the narrowed or trimmed normals of what growth
+    * left, a rim cell's inliers are tested again down to 16 of them, the faces narrowed normals
+    * resolve, instead of k + 1. See pcl::rspd::DetectorParameters::left_rim_retest. */
   void
-  setNarrowedRimRetest (bool enable);
-  /** \brief Whether rim cells' inliers on narrowed normals are tested down to 16 of them. */
+  setLeftRimRetest (bool enable);
+  /** \brief Whether rim cells' inliers on the left samples' normals are tested down to 16 of them. */
   bool
-  getNarrowedRimRetest () const { return params_.narrowed_rim_retest; }
+  getLeftRimRetest () const { return params_.left_rim_retest; }
 
   /** \brief Normals turn at a hinge (default true; false = positions alone): a seed or a group of
     * cells is bent at an edge, and seeds nothing, only if its two sides' mean normals turn by more

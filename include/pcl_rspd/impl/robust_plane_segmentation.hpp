@@ -341,9 +341,9 @@ RobustPlaneSegmentation<PointT, NormalT>::setRimRetestUntilStable (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
-RobustPlaneSegmentation<PointT, NormalT>::setNarrowedRimRetest (bool enable)
+RobustPlaneSegmentation<PointT, NormalT>::setLeftRimRetest (bool enable)
 {
-  params_.narrowed_rim_retest = enable;
+  params_.left_rim_retest = enable;
   invalidate ();
 }
 
