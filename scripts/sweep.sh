@@ -12,7 +12,7 @@
 # Needs a build (scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=./build
+bin=${RSPD_BIN:-./build} # RSPD_BIN: another build directory
 data=../shared/data
 rows=scripts/sweep_rows.txt
 if [ $# -gt 0 ] && [ "$1" != "--" ]; then rows=$1; shift; fi

@@ -14,6 +14,7 @@
 #include <pcl_rspd/plane_curvature.h>
 #include <pcl_rspd/plane_detector.h>
 #include <pcl_rspd/plane_refit.h>
+#include <pcl_rspd/position_planes.h>
 #include <pcl_rspd/plane_support.h>
 #include <pcl_rspd/robust_normals.h>
 #include <pcl_rspd/robust_statistics.h>
@@ -1014,8 +1015,23 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     labels = labelSamples (points.size (), patches); // the small-plane pass may have dropped patches
     st.assigned = assignRemainingSamples (points, graph, params, patches, labels);
   }
-
   lap ("last assignment");
+  if (params.position_planes && !patches.empty ())
+  {
+    // Position planes (departure, see DetectorParameters::position_planes), as noisy as the noisiest
+    // plane found at most; then their tails as the last assignment's.
+    labels = labelSamples (points.size (), patches);
+    const std::vector<double> median = medianDistances (points, params, patches);
+    double noise = 0.0;
+    for (const double m : median)
+      if (std::isfinite (m))
+        noise = std::max (noise, kMadScale * m);
+    st.position_planes = seedPositionPlanes (points, graph, params, noise, bandsOf (patches, median, kBandSigmas),
+                                             patches, labels);
+    if (st.position_planes > 0 && params.final_assignment != FinalAssignment::None)
+      st.assigned += assignRemainingSamples (points, graph, params, patches, labels);
+  }
+  lap ("position planes");
   if (params.edge_sides && patches.size () >= 2)
   {
     labels = labelSamples (points.size (), patches);

@@ -284,6 +284,9 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_left_retest_on.pcd", {"--left-retest", "on"}));
   labels ("r.pcd", "room_left_retest_off.pcd", {"--left-retest=off"}); // accepted (status 0)
   EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--left-retest", "yes"}).status, 2);
+  EXPECT_TRUE (room == labels ("r.pcd", "room_position_on.pcd", {"--position-planes", "on"}));
+  labels ("r.pcd", "room_position_off.pcd", {"--position-planes=off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--position-planes", "maybe"}).status, 2);
   EXPECT_TRUE (room == labels ("r.pcd", "room_release_on.pcd", {"--release", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_release_off.pcd", {"--release=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_sides_on.pcd", {"--edge-sides", "on"}));

@@ -291,6 +291,16 @@ struct DetectorParameters
     * case, a plane reaches no farther than 3 neighbourhood radii from the members growth left, along
     * the graph path that brings it (each assigned sample carries it on to the next round). */
   FinalAssignment final_assignment = FinalAssignment::Tails;
+  /** \brief Departure (position planes, seedPositionPlanes): after the last assignment, the samples no
+    * plane holds are searched for planes by their positions alone: in each part the k-NN graph
+    * connects, the plane of most samples connected within 3 σ of it (σ of the noisiest plane found),
+    * kept if it has ε, is no noisier than that plane, bends no more than noise (curved_turn_confidence), is
+    * no tube, no band layer and lies on no neighbouring plane; its tails are then assigned as the
+    * last assignment's. A small face sampled sparsely has PCA normals bent over most of it: the
+    * room at 30,000 points (k = 15) left its cabinet's top (70-95 samples, ε = 30) in no plane on
+    * four of six seeds, every cell of it failing T3 or noisier than every plane found. false = the
+    * paper: what growth left stays unassigned but for the last assignment. */
+  bool position_planes = true;
   /** \brief Departure (far members): once grow-merge and the small-plane pass are stable, members
     * farther from their plane's last estimate than max(MDP, 3 σ) (σ = 1.4826 median |d| of its
     * members) are released; growth restricted to them follows (rounds reading the round before: a
@@ -589,6 +599,7 @@ struct DetectorStatistics
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
+  std::size_t position_planes = 0;   ///< planes found by position among what was left (position_planes)
   std::size_t unsupported = 0;       ///< samples released as beyond their plane's rim (support_check)
   std::size_t thick_rebound = 0;     ///< small-plane passes whose thick cells were collected again (thick_cells_follow_noisy_seeds)
   std::size_t below_epsilon = 0;     ///< planes the passes after growth left with fewer than ε samples, dropped

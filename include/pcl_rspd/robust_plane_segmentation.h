@@ -169,6 +169,10 @@ struct RobustPlane
   *    inside one plane join it if their normal passes its MND and they lie within 4 robust standard
   *    deviations of it (the noise tail MDP cuts off); the first kind reaches no farther than 3
   *    neighbourhood radii from the plane's grown members;
+  *  - position planes (setPositionPlanes(false) for the paper): then, among the samples no plane
+  *    holds, planes fitted by position alone in each part the k-NN graph connects, kept if ε or more
+  *    lie within the noise of the noisiest plane found and bend no more than noise (a small face
+  *    sampled sparsely, whose PCA normals bend over most of it);
   *  - robust normals are available, off by default for their cost (setNormalFit(TrimmedPlane)): the
   *    reweighted least-trimmed-squares plane of the same k-neighbourhood (pcl::rspd::refineNormalsTrimmed),
   *    so normals near an edge belong to one face instead of bending between two;
@@ -473,6 +477,17 @@ public:
   /** \brief Whether rim cells' inliers on the left samples' normals are tested down to 16 of them. */
   bool
   getLeftRimRetest () const { return params_.left_rim_retest; }
+
+  /** \brief Position planes (default true; false = the paper): after the last assignment, the
+    * samples no plane holds are searched for planes by their positions alone, in the parts the k-NN
+    * graph connects: kept if ε or more lie within the noise of the noisiest plane found, bend no more
+    * than noise and are no layer of a plane found (a small face whose normals bend over most of it).
+    * See pcl::rspd::seedPositionPlanes and pcl::rspd::DetectorParameters::position_planes. */
+  void
+  setPositionPlanes (bool enable);
+  /** \brief Whether what is left is searched for planes by position. */
+  bool
+  getPositionPlanes () const { return params_.position_planes; }
 
   /** \brief Normals turn at a hinge (default true; false = positions alone): a seed or a group of
     * cells is bent at an edge, and seeds nothing, only if its two sides' mean normals turn by more

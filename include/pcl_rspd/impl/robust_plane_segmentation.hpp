@@ -348,6 +348,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setLeftRimRetest (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionPlanes (bool enable)
+{
+  params_.position_planes = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setHingeNormalTurn (bool enable)
 {
   params_.hinge_normal_turn = enable;

@@ -1,0 +1,55 @@
+/*
+ * pcl_rspd: position planes — planes found by their samples' positions alone among what every pass
+ * left, where the normals bend too much for any cell to pass T2 and T3 (a departure from the paper).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl_rspd/neighbor_graph.h>
+#include <pcl_rspd/planar_patch.h>
+#include <pcl_rspd/plane_detector.h>
+#include <pcl_rspd/point_set.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+namespace rspd
+{
+/** \brief Seed planes by position among the samples no plane holds (departure, see
+  * DetectorParameters::position_planes).
+  *
+  * The samples no plane holds, but for those inside the noise band of a plane a neighbour holds (its
+  * tail: on one side of a face's plane at its rim, it would curl the face's quadric), are cut into
+  * the parts the k-NN graph connects. In each part of ε or more, a plane is fitted from up to 32
+  * starts (a sample and its neighbours in the part, spread over it in index order): the samples
+  * connected to the start within 3 \a noise of the plane are its members, the plane is their
+  * least-squares plane again, until they no longer change. The plane with the most members, trimmed
+  * to kRefitTrimSigmas of their own robust σ, is kept if it has ε of them, they are no noisier than
+  * \a noise (robust σ of their distances), their quadric bends no more than noise would
+  * (chanceBendShare at DetectorParameters::curved_turn_confidence, the curved check's), they are no
+  * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
+  * their own (liesOnNeighbourPlane); then the part is searched again without them. Where the best
+  * plane is turned down the part is left. The pass runs on one thread, in index order: the result
+  * does not depend on the thread count.
+  *
+  * Why by position: a small face bordered by others on most sides, sampled sparsely, has PCA normals
+  * bent over most of it (the cabinet's top in the room at 30,000 points: 95 samples, k = 15, every
+  * cell of it fails T3 or has an MND of 23-27°), while its positions lie within the noise of a plane.
+  * \param[in] points samples (positions and normals)
+  * \param[in] graph their k-NN graph
+  * \param[in] params ε (min_patch_size), α, curved_turn_confidence, T1's angle (isBandLayer)
+  * \param[in] noise the robust σ of the noisiest plane found (its members' distances to it)
+  * \param[in] band per plane, the distance within which its noise lies (isBandLayer)
+  * \param[in,out] patches the planes found; new planes are appended
+  * \param[in,out] labels per sample, the plane holding it (kNoPatch: none)
+  * \return planes added */
+std::size_t
+seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params, double noise,
+                    std::vector<double> band, std::vector<PlanarPatch>& patches,
+                    std::vector<std::uint32_t>& labels);
+
+} // namespace rspd
+} // namespace pcl

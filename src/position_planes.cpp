@@ -1,0 +1,243 @@
+/*
+ * pcl_rspd: position planes (see position_planes.h).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <pcl_rspd/position_planes.h>
+#include <pcl_rspd/band_layers.h>       // isBandLayer, liesOnNeighbourPlane
+#include <pcl_rspd/disjoint_sets.h>
+#include <pcl_rspd/patch_growth.h>      // kNoPatch
+#include <pcl_rspd/plane_curvature.h>   // measureCurvature, chanceBendShare, isTube
+#include <pcl_rspd/plane_refit.h>       // kRefitTrimSigmas
+#include <pcl_rspd/robust_statistics.h> // robustSpreadInPlace, kMadScale
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+namespace pcl
+{
+namespace rspd
+{
+namespace
+{
+/** Starts tried per part: enough that one lies inside each face of a part a few faces share. */
+constexpr std::size_t kStarts = 32;
+/** Rounds of fit-and-collect per start; the members settle in two or three. */
+constexpr int kFitRounds = 8;
+/** A member lies within this many \a noise of its plane (the noise band of the passes after growth). */
+constexpr double kPositionBandSigmas = 3.0;
+
+struct Plane
+{
+  Eigen::Vector3d center = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero ();
+};
+
+/** Least-squares plane of \a samples, in double precision about their mean. false: fewer than three
+  * or collinear. */
+bool
+fitPlane (const PointSet& points, const std::vector<std::uint32_t>& samples, Plane& plane)
+{
+  if (samples.size () < 3)
+    return false;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+  for (const auto i : samples)
+    mean += points.points[i].cast<double> ();
+  mean /= static_cast<double> (samples.size ());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
+  for (const auto i : samples)
+  {
+    const Eigen::Vector3d d = points.points[i].cast<double> () - mean;
+    scatter += d * d.transpose ();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (scatter);
+  if (solver.info () != Eigen::Success || !(solver.eigenvalues ()[1] > 0.0))
+    return false;
+  plane.center = mean;
+  plane.normal = solver.eigenvectors ().col (0);
+  return true;
+}
+
+/** The samples of the part (stamp[i] == part) connected to \a start through samples within \a band
+  * of \a plane, in ascending order. */
+std::vector<std::uint32_t>
+collect (const PointSet& points, const NeighborGraph& graph, const std::vector<std::uint32_t>& stamp,
+         std::uint32_t part, std::uint32_t start, const Plane& plane, double band, std::vector<std::uint32_t>& seen,
+         std::uint32_t& visit)
+{
+  const auto near = [&] (std::uint32_t i) {
+    return std::abs ((points.points[i].cast<double> () - plane.center).dot (plane.normal)) <= band;
+  };
+  std::vector<std::uint32_t> out;
+  if (!near (start))
+    return out;
+  ++visit;
+  seen[start] = visit;
+  out.push_back (start);
+  for (std::size_t head = 0; head < out.size (); ++head)
+    graph.forEachNeighbor (out[head], [&] (std::uint32_t n) {
+      if (stamp[n] == part && seen[n] != visit && near (n))
+      {
+        seen[n] = visit;
+        out.push_back (n);
+      }
+    });
+  std::sort (out.begin (), out.end ());
+  return out;
+}
+} // namespace
+
+std::size_t
+seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params, double noise,
+                    std::vector<double> band, std::vector<PlanarPatch>& patches,
+                    std::vector<std::uint32_t>& labels)
+{
+  const std::size_t n = points.points.size ();
+  const std::size_t eps = std::max<std::size_t> (params.min_patch_size, 3);
+  if (!(noise > 0.0) || !std::isfinite (noise) || n == 0)
+    return 0;
+  const double reach = kPositionBandSigmas * noise;
+
+  // Open: no plane holds the sample, and it lies in the noise band of no plane a neighbour holds
+  // (a plane's tail beside its rim would curl a face's quadric there).
+  std::vector<char> free (n, 0);
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    if (labels[i] != kNoPatch)
+      continue;
+    bool in_band = false;
+    const Eigen::Vector3d pi = points.points[i].cast<double> ();
+    graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+      const std::uint32_t l = labels[j];
+      if (l != kNoPatch && !in_band)
+        in_band = std::abs ((pi - patches[l].center).dot (patches[l].normal)) <= band[l];
+    });
+    free[i] = !in_band;
+  }
+  // The parts of what is open, joined along the k-NN graph.
+  DisjointSets sets (n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (free[i])
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        if (free[j])
+          sets.join (i, j);
+      });
+  std::vector<std::vector<std::uint32_t>> parts;
+  for (auto& g : sets.groups ())
+    if (g.size () >= eps && free[g.front ()])
+      parts.push_back (std::move (g));
+
+  // stamp[i]: the part (1-based) sample i is still open in, 0 for none.
+  std::vector<std::uint32_t> stamp (n, 0), seen (n, 0);
+  std::uint32_t visit = 0;
+  const std::size_t before = patches.size ();
+  for (std::size_t p = 0; p < parts.size (); ++p)
+  {
+    const std::uint32_t part = static_cast<std::uint32_t> (p + 1);
+    std::vector<std::uint32_t> open = parts[p];
+    for (const auto i : open)
+      stamp[i] = part;
+    while (open.size () >= eps)
+    {
+      std::vector<std::uint32_t> best;
+      Plane best_plane;
+      const std::size_t stride = std::max<std::size_t> (1, open.size () / kStarts);
+      for (std::size_t s = 0; s < open.size (); s += stride)
+      {
+        const std::uint32_t start = open[s];
+        std::vector<std::uint32_t> members {start};
+        graph.forEachNeighbor (start, [&] (std::uint32_t j) {
+          if (stamp[j] == part)
+            members.push_back (j);
+        });
+        Plane plane;
+        if (!fitPlane (points, members, plane))
+          continue;
+        for (int round = 0; round < kFitRounds; ++round)
+        {
+          std::vector<std::uint32_t> next = collect (points, graph, stamp, part, start, plane, reach, seen, visit);
+          const bool settled = next == members;
+          members = std::move (next);
+          if (settled || !fitPlane (points, members, plane))
+            break;
+        }
+        // Most members wins; ties keep the earlier start (the result does not depend on threads).
+        if (members.size () > best.size ())
+        {
+          best = std::move (members);
+          best_plane = plane;
+        }
+      }
+      if (best.size () < eps)
+        break;
+      {
+        // Trimmed to kRefitTrimSigmas of their own robust σ: samples of a neighbouring face inside
+        // the reach, all on one side of the plane at its rim, would curl its quadric.
+        std::vector<double> d;
+        for (const auto i : best)
+          d.push_back (std::abs ((points.points[i].cast<double> () - best_plane.center).dot (best_plane.normal)));
+        const double own = kMadScale * medianInPlace (d);
+        std::vector<std::uint32_t> kept;
+        for (const auto i : best)
+          if (std::abs ((points.points[i].cast<double> () - best_plane.center).dot (best_plane.normal)) <= kRefitTrimSigmas * own)
+            kept.push_back (i);
+        best = std::move (kept);
+        fitPlane (points, best, best_plane);
+        if (best.size () < eps)
+          break;
+      }
+
+      PlanarPatch plane;
+      plane.members = best;
+      plane.first_index = best.front ();
+      plane.center = best_plane.center;
+      plane.normal = best_plane.normal;
+      std::vector<double> d, phi;
+      d.reserve (best.size ());
+      phi.reserve (best.size ());
+      for (const auto i : best)
+      {
+        d.push_back (std::abs ((points.points[i].cast<double> () - plane.center).dot (plane.normal)));
+        phi.push_back (std::acos (std::min (1.0, std::abs (points.normals[i].cast<double> ().dot (plane.normal)))));
+      }
+      const RobustSpread ds = robustSpreadInPlace (d);
+      const RobustSpread ps = robustSpreadInPlace (phi);
+      plane.mdp = ds.median + params.alpha * ds.mad;
+      plane.mnd = ps.median + std::max (params.alpha * ps.mad, params.normal_deviation_floor);
+      plane.cos_mnd = std::cos (plane.mnd);
+      plane.estimate_size = best.size ();
+      plane.grown = true;
+
+      // No noisier than the noisiest plane found, flat within chance, no tube, no layer of a plane
+      // found and no strip that lies on a neighbouring plane.
+      const double sigma = kMadScale * ds.median;
+      const PlaneCurvature c = measureCurvature (points, best);
+      const bool flat = c.samples == 0 || c.share < chanceBendShare (c.samples, params.curved_turn_confidence);
+      if (!(sigma <= noise) || !flat || (c.samples > 0 && isTube (c, plane.mdp)) ||
+          isBandLayer (points, graph, params, patches, band, labels, plane) ||
+          liesOnNeighbourPlane (points, graph, patches, labels, plane))
+        break;
+
+      const auto label = static_cast<std::uint32_t> (patches.size ());
+      for (const auto i : best)
+      {
+        labels[i] = label;
+        stamp[i] = 0;
+      }
+      band.push_back (plane.mdp);
+      patches.push_back (std::move (plane));
+      std::vector<std::uint32_t> rest;
+      rest.reserve (open.size () - best.size ());
+      std::set_difference (open.begin (), open.end (), best.begin (), best.end (), std::back_inserter (rest));
+      open = std::move (rest);
+    }
+    for (const auto i : open)
+      stamp[i] = 0;
+  }
+  return patches.size () - before;
+}
+
+} // namespace rspd
+} // namespace pcl

@@ -1,0 +1,157 @@
+/*
+ * Tests of the planes found by position among what every pass left (seedPositionPlanes).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/position_planes.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace pcl::rspd;
+
+namespace
+{
+/** A wall, the plane z = 0 over 1 x 1 m (30 x 30 samples, noise 3 mm), held by plane 0 with a
+  * noise band of 1 cm; the samples added after it are held by no plane. */
+struct Scene
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<double> band {0.01};
+  std::vector<std::uint32_t> labels;
+  NeighborGraph graph;
+
+  Scene ()
+  {
+    std::vector<std::uint32_t> wall = rspd_test::addRectangle (set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 30, 30, 0.003f, 1);
+    planes = {rspd_test::makePatch (wall, {0.5, 0.5, 0}, {0, 0, 1}, 0.008, 0.1)};
+  }
+
+  /** Bend every normal from \a first on by \a angle about a direction of its own (PCA normals of a
+    * small face bordered by others, which no normal test admits). */
+  void
+  bendNormals (std::size_t first, double angle)
+  {
+    std::mt19937 rng (7);
+    std::uniform_real_distribution<double> turn (0.0, 2.0 * M_PI);
+    for (std::size_t i = first; i < set.normals.size (); ++i)
+    {
+      const Eigen::Vector3d n = set.normals[i].cast<double> ();
+      const Eigen::Vector3d u = n.unitOrthogonal ();
+      const Eigen::Vector3d v = n.cross (u);
+      const double t = turn (rng);
+      const Eigen::Vector3d axis = std::cos (t) * u + std::sin (t) * v;
+      set.normals[i] = (std::cos (angle) * n + std::sin (angle) * axis.cross (n)).normalized ().cast<float> ();
+    }
+  }
+
+  std::size_t
+  run (double noise = 0.003)
+  {
+    labels.assign (set.points.size (), kNoPatch);
+    for (const auto i : planes[0].members)
+      labels[i] = 0;
+    graph = rspd_test::bruteForceGraph (set.points, 15);
+    return seedPositionPlanes (set, graph, rspd_test::unitParameters (), noise, band, planes, labels);
+  }
+};
+
+/** Samples of \a members that plane \a p holds. */
+std::size_t
+heldBy (const Scene& s, const std::vector<std::uint32_t>& members, std::size_t p)
+{
+  std::size_t held = 0;
+  for (const auto i : members)
+    held += s.labels[i] == p;
+  return held;
+}
+} // namespace
+
+TEST (PositionPlanes, FaceWithBentNormalsIsFoundByPosition)
+{
+  // A 0.3 m face 0.5 m above the wall's corner, 12 x 12 samples at σ 2 mm, every normal bent by 25°.
+  Scene s;
+  const std::size_t first = s.set.points.size ();
+  const auto face = rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 12, 12, 0.002f, 2);
+  s.bendNormals (first, 25.0 * M_PI / 180.0);
+  ASSERT_EQ (s.run (), 1u);
+  ASSERT_EQ (s.planes.size (), 2u);
+  EXPECT_GE (heldBy (s, face, 1), 140u);
+  const Eigen::Vector3d truth = Eigen::Vector3d (0.3, 0, 0).cross (Eigen::Vector3d (0, 0.3, 0.05)).normalized ();
+  EXPECT_GT (std::abs (s.planes[1].normal.dot (truth)), std::cos (1.0 * M_PI / 180.0));
+  EXPECT_EQ (heldBy (s, s.planes[0].members, 0), s.planes[0].members.size ()); // the wall keeps its own
+}
+
+TEST (PositionPlanes, TwoFacesOfOnePartAreTwoPlanes)
+{
+  // An L of two 0.3 m faces meeting at a right angle, 12 x 12 samples each, normals bent by 25°:
+  // one part of the graph, two planes.
+  Scene s;
+  const std::size_t first = s.set.points.size ();
+  const auto a = rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0}, 12, 12, 0.002f, 3);
+  const auto b = rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.5f}, {0, 0.3f, 0}, {0, 0, 0.3f}, 12, 12, 0.002f, 4);
+  s.bendNormals (first, 25.0 * M_PI / 180.0);
+  ASSERT_EQ (s.run (), 2u);
+  EXPECT_GE (heldBy (s, a, 1) + heldBy (s, a, 2), 130u);
+  EXPECT_GE (heldBy (s, b, 1) + heldBy (s, b, 2), 130u);
+  EXPECT_TRUE ((heldBy (s, a, 1) > 100) != (heldBy (s, a, 2) > 100)); // each face in one plane
+}
+
+TEST (PositionPlanes, CurvedPatchIsNoPlane)
+{
+  // A quarter of a cylinder of radius 0.15 m (a pillar's side), 16 x 12 samples at σ 2 mm: within
+  // 3 σ of a plane only strips lie, and the quadric of any larger part bends beyond noise.
+  Scene s;
+  std::mt19937 rng (5);
+  std::normal_distribution<float> g (0.0f, 0.002f);
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 12; ++j)
+    {
+      const float t = static_cast<float> (M_PI / 2) * (i + 0.5f) / 16.0f;
+      const Eigen::Vector3f n (std::cos (t), std::sin (t), 0.0f);
+      s.set.points.push_back (Eigen::Vector3f (1.5f, 0.5f, 0.2f) + (0.15f + g (rng)) * n + Eigen::Vector3f (0, 0, 0.3f * j / 12.0f));
+      s.set.normals.push_back (n);
+      s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+    }
+  EXPECT_EQ (s.run (), 0u);
+  EXPECT_EQ (s.planes.size (), 1u);
+}
+
+TEST (PositionPlanes, NoisierThanEveryPlaneFoundIsNoPlane)
+{
+  // The face of the first test at σ 1.5 cm, where the noisiest plane found has σ 3 mm.
+  Scene s;
+  const std::size_t first = s.set.points.size ();
+  rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 12, 12, 0.015f, 2);
+  s.bendNormals (first, 25.0 * M_PI / 180.0);
+  EXPECT_EQ (s.run (0.003), 0u);
+  // As noisy as the noisiest plane found, it is one.
+  Scene t;
+  rspd_test::addRectangle (t.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 12, 12, 0.015f, 2);
+  EXPECT_EQ (t.run (0.02), 1u);
+}
+
+TEST (PositionPlanes, LayerInsideAPlanesBandIsNoPlane)
+{
+  // 144 samples 4 mm above the wall's middle, inside its 1 cm band, which no plane holds (a wall's
+  // tail growth left): the wall's, not a plane of their own.
+  Scene s;
+  rspd_test::addRectangle (s.set, {0.35f, 0.35f, 0.004f}, {0.3f, 0, 0}, {0, 0.3f, 0}, 12, 12, 0.002f, 6);
+  EXPECT_EQ (s.run (), 0u);
+}
+
+TEST (PositionPlanes, FewerThanEpsilonIsNoPlane)
+{
+  // 7 x 7 = 49 samples, ε = 50.
+  Scene s;
+  rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 7, 7, 0.002f, 2);
+  EXPECT_EQ (s.run (), 0u);
+  Scene t;
+  rspd_test::addRectangle (t.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 8, 8, 0.002f, 2);
+  EXPECT_EQ (t.run (), 1u);
+}
