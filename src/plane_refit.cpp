@@ -15,10 +15,6 @@ namespace pcl
 {
 namespace rspd
 {
-namespace
-{
-/** Least-squares plane of the members \a use marks (all when empty), about \a origin for precision.
-  * \return false when fewer than three members count or they are collinear (no plane to fit) */
 bool
 leastSquaresPlane (const PointSet& points, const std::vector<std::uint32_t>& members, const std::vector<char>& use,
                    const Eigen::Vector3d& origin, Eigen::Vector3d& center, Eigen::Vector3d& normal)
@@ -48,7 +44,6 @@ leastSquaresPlane (const PointSet& points, const std::vector<std::uint32_t>& mem
   normal = solver.eigenvectors ().col (0).normalized ();
   return true;
 }
-} // namespace
 
 void
 refitPlanes (const PointSet& points, int num_threads, std::vector<PlanarPatch>& patches)

@@ -7,10 +7,8 @@
 #include <pcl_rspd/disjoint_sets.h>
 #include <pcl_rspd/patch_growth.h>      // kNoPatch
 #include <pcl_rspd/plane_curvature.h>   // measureCurvature, chanceBendShare, isTube
-#include <pcl_rspd/plane_refit.h>       // kRefitTrimSigmas
+#include <pcl_rspd/plane_refit.h>       // leastSquaresPlane, kRefitTrimSigmas
 #include <pcl_rspd/robust_statistics.h> // robustSpreadInPlace, kMadScale
-
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -35,29 +33,12 @@ struct Plane
   Eigen::Vector3d normal = Eigen::Vector3d::Zero ();
 };
 
-/** Least-squares plane of \a samples, in double precision about their mean. false: fewer than three
-  * or collinear. */
+/** Least-squares plane of \a samples (leastSquaresPlane; the centred positions need no origin).
+  * false: fewer than three or collinear. */
 bool
 fitPlane (const PointSet& points, const std::vector<std::uint32_t>& samples, Plane& plane)
 {
-  if (samples.size () < 3)
-    return false;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
-  for (const auto i : samples)
-    mean += points.points[i].cast<double> ();
-  mean /= static_cast<double> (samples.size ());
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
-  for (const auto i : samples)
-  {
-    const Eigen::Vector3d d = points.points[i].cast<double> () - mean;
-    scatter += d * d.transpose ();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (scatter);
-  if (solver.info () != Eigen::Success || !(solver.eigenvalues ()[1] > 0.0))
-    return false;
-  plane.center = mean;
-  plane.normal = solver.eigenvectors ().col (0);
-  return true;
+  return leastSquaresPlane (points, samples, {}, Eigen::Vector3d::Zero (), plane.center, plane.normal);
 }
 
 /** The samples of the part (stamp[i] == part) connected to \a start through samples within \a band
@@ -178,11 +159,12 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
         std::vector<double> d;
         for (const auto i : best)
           d.push_back (std::abs ((points.points[i].cast<double> () - best_plane.center).dot (best_plane.normal)));
-        const double own = kMadScale * medianInPlace (d);
+        std::vector<double> scratch = d;
+        const double bound = kRefitTrimSigmas * kMadScale * medianInPlace (scratch);
         std::vector<std::uint32_t> kept;
-        for (const auto i : best)
-          if (std::abs ((points.points[i].cast<double> () - best_plane.center).dot (best_plane.normal)) <= kRefitTrimSigmas * own)
-            kept.push_back (i);
+        for (std::size_t t = 0; t < best.size (); ++t)
+          if (d[t] <= bound)
+            kept.push_back (best[t]);
         best = std::move (kept);
         fitPlane (points, best, best_plane);
         if (best.size () < eps)

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -154,4 +155,23 @@ TEST (PositionPlanes, FewerThanEpsilonIsNoPlane)
   Scene t;
   rspd_test::addRectangle (t.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 8, 8, 0.002f, 2);
   EXPECT_EQ (t.run (), 1u);
+}
+
+TEST (PositionPlanes, NoNoiseBoundOrNoSamplesAddsNothing)
+{
+  // Bad input: a noise bound of 0, NaN or infinity (no plane found to take it from) and an empty set
+  // add no plane and leave the labels as they were.
+  for (const double noise : {0.0, -1.0, std::nan (""), HUGE_VAL})
+  {
+    Scene s;
+    rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 12, 12, 0.002f, 2);
+    EXPECT_EQ (s.run (noise), 0u) << noise;
+    EXPECT_EQ (s.planes.size (), 1u);
+    EXPECT_EQ (std::count (s.labels.begin (), s.labels.end (), kNoPatch), 144);
+  }
+  PointSet empty;
+  std::vector<PlanarPatch> planes;
+  std::vector<std::uint32_t> labels;
+  EXPECT_EQ (seedPositionPlanes (empty, NeighborGraph (), rspd_test::unitParameters (), 0.003, {}, planes, labels), 0u);
+  EXPECT_TRUE (planes.empty ());
 }

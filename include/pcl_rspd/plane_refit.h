@@ -8,6 +8,9 @@
 #include <pcl_rspd/planar_patch.h>
 #include <pcl_rspd/point_set.h>
 
+#include <Eigen/Core>
+
+#include <cstdint>
 #include <vector>
 
 namespace pcl
@@ -25,6 +28,15 @@ constexpr double kRefitTrimSigmas = 2.5;
   * `rspd_segment` on 17 clouds) left the generated scenes' labels identical or 2 samples apart, and
   * moved F1 by at most 0.0002 (synpeb_pc01 0.92855 → 0.92850, cgal_building 0.86756 → 0.86742). */
 constexpr int kRefitRounds = 2;
+
+/** \brief Least-squares plane of the \a members that \a use marks (all when \a use is empty), summed
+  * about \a origin in double precision (a point near them keeps far-off clouds exact).
+  * \param[out] center the members' mean
+  * \param[out] normal unit normal of their plane (the scatter's least eigenvector)
+  * \return false, outputs untouched, when fewer than three members count or they are collinear */
+bool
+leastSquaresPlane (const PointSet& points, const std::vector<std::uint32_t>& members, const std::vector<char>& use,
+                   const Eigen::Vector3d& origin, Eigen::Vector3d& center, Eigen::Vector3d& normal);
 
 /** \brief Final refit (departure, DetectorParameters::final_refit): set each plane's C and N to the
   * least-squares plane of its members, trimmed (kRefitTrimSigmas, kRefitRounds); MDP, MND and the
