@@ -80,7 +80,8 @@ const char* const kHelp =
     "  CLOUD            .pcd or .ply; normal_x/y/z are used by every method if present\n"
     "  TRUTH            per-point ground truth: PCD with a 'label' field, or raw uint32 LE (.gt)\n"
     "  --scene NAME     use a generated scene with its truth instead of CLOUD (cube, room, staircase,\n"
-    "                   facade, industrial, boxes, plane); -n N points, --seed S random seed\n"
+    "                   facade, industrial, boxes, plane); -n N points, --seed S random seed,\n"
+    "                   --layout L the scene's dimensions drawn from L (0: the documented ones)\n"
     "  -k N             neighbours for the shared normal estimation (default 50)\n"
     "  --threads N      OpenMP threads for the normals and rspd (default: OpenMP's default)\n"
     "  --voxel F        evaluation voxel edge as a fraction of the largest extent (default 0.01)\n"
@@ -105,6 +106,7 @@ struct Options
   std::string scene;
   long long scene_points = 0;   // 0: the scene's default
   long long scene_seed = 1;
+  long long scene_layout = 0;
   bool scene_points_set = false;
   bool scene_seed_set = false;
   int k = 50;
@@ -172,6 +174,14 @@ parseArguments (int argc, char** argv)
       o.scene_seed = number;
       o.scene_seed_set = true;
     }
+    else if (arg == "--layout")
+    {
+      const std::string v = value ();
+      if (!parseInteger (v, 0, std::numeric_limits<std::uint32_t>::max (), number))
+        throw UsageError{"--layout needs an integer from 0 to 4294967295 (got '" + v + "')"};
+      o.scene_layout = number;
+      o.scene_seed_set = true;
+    }
     else if (arg == "-k" || arg == "--neighbours" || arg == "--neighbors")
     {
       const std::string v = value ();
@@ -233,7 +243,7 @@ parseArguments (int argc, char** argv)
   else
   {
     if (o.scene_points_set || o.scene_seed_set)
-      throw UsageError{"-n and --seed only apply to --scene"};
+      throw UsageError{"-n, --seed and --layout only apply to --scene"};
     if (positional.empty ())
       throw UsageError{"no input: give CLOUD or --scene NAME"};
     if (positional.size () > 2)
@@ -779,6 +789,7 @@ run (const Options& o)
     pcl::rspd::SceneOptions options;
     options.num_points = static_cast<std::size_t> (o.scene_points);
     options.seed = static_cast<std::uint32_t> (o.scene_seed);
+    options.layout = static_cast<std::uint32_t> (o.scene_layout);
     pcl::rspd::Scene scene;
     try
     {
@@ -790,7 +801,8 @@ run (const Options& o)
     }
     rspd_tools::makeLoadedCloud (scene.cloud, loaded);
     truth = scene.labels;
-    s.source = "scene " + o.scene + " (seed " + std::to_string (o.scene_seed) + ")";
+    s.source = "scene " + o.scene + " (seed " + std::to_string (o.scene_seed) +
+               (o.scene_layout != 0 ? ", layout " + std::to_string (o.scene_layout) : std::string ()) + ")";
   }
   else
   {

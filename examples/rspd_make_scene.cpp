@@ -35,7 +35,7 @@ namespace
 {
 const char* const kUsage =
   "usage: rspd_make_scene NAME OUT_PREFIX [-n N] [--noise S] [--outliers R] [--rotate]"
-  " [--scale F] [--offset X Y Z] [--seed S] [--no-shuffle] | rspd_make_scene --list\n"
+  " [--scale F] [--offset X Y Z] [--seed S] [--layout L] [--no-shuffle] | rspd_make_scene --list\n"
   "       rspd_make_scene CLOUD.pcd|CLOUD.ply OUT_PREFIX [--rotate] [--scale F] [--offset X Y Z] [--seed S]";
 
 /** \brief Whether a scene name is a cloud file to move rather than a scene to generate. */
@@ -178,6 +178,12 @@ main (int argc, char** argv)
         options.seed = static_cast<std::uint32_t> (
           parseUnsigned (arg, argv[i], std::numeric_limits<std::uint32_t>::max ()));
       }
+      else if (arg == "--layout")
+      {
+        value (1);
+        options.layout = static_cast<std::uint32_t> (
+          parseUnsigned (arg, argv[i], std::numeric_limits<std::uint32_t>::max ()));
+      }
       else if (arg == "--no-shuffle")
         options.shuffle = false;
       else if (arg.size () > 1 && arg[0] == '-')
@@ -198,9 +204,10 @@ main (int argc, char** argv)
   const std::string& prefix = positional[1];
   if (isCloudFile (name))
   {
-    if (options.num_points != 0 || options.noise >= 0.0 || options.outlier_ratio >= 0.0 || !options.shuffle)
+    if (options.num_points != 0 || options.noise >= 0.0 || options.outlier_ratio >= 0.0 || !options.shuffle ||
+        options.layout != 0)
     {
-      std::fprintf (stderr, "rspd_make_scene: -n, --noise, --outliers and --no-shuffle apply to generated "
+      std::fprintf (stderr, "rspd_make_scene: -n, --noise, --outliers, --layout and --no-shuffle apply to generated "
                     "scenes, not to '%s'\n%s\n", name.c_str (), kUsage);
       return 2;
     }

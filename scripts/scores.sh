@@ -4,11 +4,11 @@
 # 1M-point cube of issue 6), on the ../shared/data clouds with ground truth, and on each generated
 # scene and SynPEB cloud scaled x1000, moved 1 km and turned by three random rotations, scored
 # against the original's truth.
-# Needs a build (scripts/build.sh). Prints markdown tables on stdout. Arguments are passed to
+# Needs a build (scripts/build.sh; RSPD_BIN=DIR for another). Prints markdown tables on stdout. Arguments are passed to
 # rspd_segment (e.g. `--frame axes` for the paper's axis-aligned frame).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=./build
+bin=${RSPD_BIN:-./build} # RSPD_BIN: another build directory
 data=../shared/data
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

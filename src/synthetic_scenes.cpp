@@ -94,6 +94,42 @@ class SceneRandom
     bool has_spare_ = false;
 };
 
+/** \brief A scene's dimensions: the documented value for layout 0, else drawn uniformly from a
+  * range by a stream of its own, so that the layout never changes the samples' random numbers
+  * beyond what the geometry itself changes. */
+class LayoutDraw
+{
+  public:
+    explicit LayoutDraw (std::uint32_t layout)
+      : varied_ (layout != 0), rng_ (layout * 0x9e3779b1u ^ 0x68e31da4u) {}
+
+    /** \brief \a nominal for layout 0, else uniform in [lo, hi). */
+    double
+    operator() (double nominal, double lo, double hi)
+    {
+      return varied_ ? rng_.uniform (lo, hi) : nominal;
+    }
+
+    /** \brief \a nominal for layout 0, else uniform in [lo, hi] (hi < lo counts as lo). */
+    int
+    count (int nominal, int lo, int hi)
+    {
+      if (!varied_)
+        return nominal;
+      return lo + static_cast<int> (rng_.index (static_cast<std::size_t> (std::max (hi - lo, 0) + 1)));
+    }
+
+    bool
+    varied () const
+    {
+      return varied_;
+    }
+
+  private:
+    bool varied_;
+    SceneRandom rng_;
+};
+
 /** \brief One generated sample before it is written into the cloud. */
 struct Sample
 {
@@ -362,34 +398,47 @@ struct Params
   std::size_t num_points;
   std::size_t num_outliers;
   double noise;
+  std::uint32_t layout;  ///< SceneOptions::layout
 };
 
 // ---------------------------------------------------------------------------------------------
 // Area-sampled scenes
 
-/** \brief Cube [-0.5, 0.5]^3: 6 face planes. */
+/** \brief Cube [-0.5, 0.5]^3 (a box of edges 0.5-1.5 for layout > 0, centred on the origin):
+  * 6 face planes. */
 Generated
 buildCube (const Params& prm, SceneRandom& rng)
 {
+  LayoutDraw draw (prm.layout);
+  Eigen::Vector3d half;
+  for (int d = 0; d < 3; ++d)
+    half[d] = 0.5 * draw (1.0, 0.5, 1.5);
   Generated g;
-  g.extent = {Eigen::Vector3d::Constant (-0.5), Eigen::Vector3d::Constant (0.5)};
+  g.extent = {-half, half};
   std::vector<Surface> surfaces;
   std::uint32_t label = 0;
   for (int axis = 0; axis < 3; ++axis)
-    for (double side : {-0.5, 0.5})
-      surfaces.push_back (planeSurface (axisRect (axis, side, -0.5, 0.5, -0.5, 0.5), ++label));
+  {
+    const int a0 = axis == 0 ? 1 : 0, a1 = axis == 2 ? 1 : 2;  // the two other axes, in order
+    for (double side : {-1.0, 1.0})
+      surfaces.push_back (planeSurface (
+        axisRect (axis, side * half[axis], -half[a0], half[a0], -half[a1], half[a1]), ++label));
+  }
   g.num_candidates = label;
   sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
   return g;
 }
 
 /** \brief Staircase of 15 steps, 0.3 m deep x 0.18 m high x 1.0 m wide, rising along +x; each
-  * step has a riser (vertical, label 2i + 1) and a tread (horizontal, label 2i + 2): 30 planes. */
+  * step has a riser (vertical, label 2i + 1) and a tread (horizontal, label 2i + 2): 30 planes.
+  * For layout > 0: 8-20 steps, 0.22-0.36 m deep, 0.14-0.21 m high, 0.8-1.6 m wide. */
 Generated
 buildStaircase (const Params& prm, SceneRandom& rng)
 {
-  const int steps = 15;
-  const double depth = 0.3, rise = 0.18, width = 1.0;
+  LayoutDraw draw (prm.layout);
+  const int steps = draw.count (15, 8, 20);
+  const double depth = draw (0.3, 0.22, 0.36), rise = draw (0.18, 0.14, 0.21);
+  const double width = draw (1.0, 0.8, 1.6);
   Generated g;
   g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (steps * depth, width, steps * rise)};
   std::vector<Surface> surfaces;
@@ -409,11 +458,13 @@ buildStaircase (const Params& prm, SceneRandom& rng)
 /** \brief Boxes of rising roughness: a floor 12 x 12 m (z = 0) and a wall 12 x 3 m (y = 6) at the
   * scene's noise, and six boxes 1.5 x 1.0 m, 0.8 to 1.8 m tall, in two rows, whose four sides and
   * top have 1, 3, 5, 7.5, 10 and 15 times that noise (2 mm to 3 cm by default): noise that differs
-  * from surface to surface, as between materials and ranges in a scan. 32 planes. */
+  * from surface to surface, as between materials and ranges in a scan. 32 planes. For layout > 0
+  * the boxes' footprints are 1.0-2.0 x 0.7-1.3 m. */
 Generated
 buildBoxes (const Params& prm, SceneRandom& rng)
 {
   const double roughness[6] = {1.0, 3.0, 5.0, 7.5, 10.0, 15.0};
+  LayoutDraw draw (prm.layout);
   Generated g;
   g.extent = {Eigen::Vector3d (-6.0, -6.0, 0.0), Eigen::Vector3d (6.0, 6.0, 3.0)};
   std::vector<std::vector<Surface>> groups (7); // 0: floor and wall; 1-6: the boxes
@@ -423,7 +474,8 @@ buildBoxes (const Params& prm, SceneRandom& rng)
   for (int i = 0; i < 6; ++i)
   {
     const Eigen::Vector3d lo (-5.25 + (i % 3) * 4.0, -3.0 + (i / 3) * 5.0, 0.0);
-    const Eigen::Vector3d hi = lo + Eigen::Vector3d (1.5, 1.0, 0.8 + 0.2 * i);
+    const Eigen::Vector3d hi =
+      lo + Eigen::Vector3d (draw (1.5, 1.0, 2.0), draw (1.0, 0.7, 1.3), 0.8 + 0.2 * i);
     footprints.push_back (Exclusion::box (Eigen::Vector3d (lo.x (), lo.y (), -1.0), hi));
     covered += (hi.x () - lo.x ()) * (hi.y () - lo.y ());
     auto& box = groups[i + 1];
@@ -454,13 +506,29 @@ buildBoxes (const Params& prm, SceneRandom& rng)
   * whose glass is recessed 0.2 m (y = 0.2). Planes: the wall (with the window openings cut out)
   * and the 15 recessed window planes, 16 in all. The reveals (the recess side faces) are left
   * out on purpose: at 0.2 m x 1.6 m they would add 60 tiny planes, and a head-on scan sees
-  * little of them. */
+  * little of them. For layout > 0: 12-30 m x 6-14 m, windows of 0.9-2.0 x 1.0-2.2 m recessed
+  * 0.1-0.35 m, in an even grid of at least 2 x 2 with 0.8 m or more of wall between them. */
 Generated
 buildFacade (const Params& prm, SceneRandom& rng)
 {
-  const double wall_w = 20.0, wall_h = 10.0, recess = 0.2, win = 1.6;
-  const double col_centres[] = {2.0, 6.0, 10.0, 14.0, 18.0};
-  const double row_centres[] = {2.0, 5.0, 8.0};
+  LayoutDraw draw (prm.layout);
+  const double wall_w = draw (20.0, 12.0, 30.0), wall_h = draw (10.0, 6.0, 14.0);
+  const double recess = draw (0.2, 0.1, 0.35);
+  const double win_w = draw (1.6, 0.9, 2.0), win_h = draw (1.6, 1.0, 2.2);
+  std::vector<double> col_centres {2.0, 6.0, 10.0, 14.0, 18.0};
+  std::vector<double> row_centres {2.0, 5.0, 8.0};
+  if (draw.varied ())
+  {
+    // Evenly spaced, at least 0.8 m of wall between windows and around them.
+    const int cols = draw.count (0, 2, static_cast<int> (wall_w / (win_w + 0.8)));
+    const int rows = draw.count (0, 2, static_cast<int> (wall_h / (win_h + 0.8)));
+    col_centres.clear ();
+    row_centres.clear ();
+    for (int i = 0; i < cols; ++i)
+      col_centres.push_back ((i + 0.5) * wall_w / cols);
+    for (int i = 0; i < rows; ++i)
+      row_centres.push_back ((i + 0.5) * wall_h / rows);
+  }
   Generated g;
   g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (wall_w, recess, wall_h)};
 
@@ -470,14 +538,15 @@ buildFacade (const Params& prm, SceneRandom& rng)
   for (double zc : row_centres)
     for (double xc : col_centres)
     {
-      const double x0 = xc - 0.5 * win, z0 = zc - 0.5 * win;
+      const double x0 = xc - 0.5 * win_w, z0 = zc - 0.5 * win_h;
       openings.push_back (Exclusion::box (Eigen::Vector3d (x0, -1.0, z0),
-                                          Eigen::Vector3d (x0 + win, 1.0, z0 + win)));
-      windows.push_back (planeSurface (axisRect (1, recess, x0, x0 + win, z0, z0 + win), ++label));
+                                          Eigen::Vector3d (x0 + win_w, 1.0, z0 + win_h)));
+      windows.push_back (
+        planeSurface (axisRect (1, recess, x0, x0 + win_w, z0, z0 + win_h), ++label));
     }
   std::vector<Surface> surfaces;
   surfaces.push_back (planeSurface (axisRect (1, 0.0, 0.0, wall_w, 0.0, wall_h), 1, openings,
-                                    static_cast<double> (openings.size ()) * win * win));
+                                    static_cast<double> (openings.size ()) * win_w * win_h));
   surfaces.insert (surfaces.end (), windows.begin (), windows.end ());
   g.num_candidates = label;
   sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
@@ -487,20 +556,29 @@ buildFacade (const Params& prm, SceneRandom& rng)
 /** \brief Industrial yard, 20 x 20 m: ground, two 6 m walls meeting in a corner, a 6 x 6 x 2 m
   * platform in that corner (top and its two exposed sides) -- 6 planes -- plus curved clutter:
   * two tanks (radius 1.5 m, 8 m tall, hemispherical dome, no flat top) and four pipes
-  * (two horizontal, two vertical, radius 0.1 - 0.25 m). */
+  * (two horizontal, two vertical, radius 0.1 - 0.25 m). For layout > 0: a 14-26 m yard, walls
+  * 4-8 m, a platform a fifth to a third of the yard wide and 1-3 m high, tanks of radius 0.8-1.5 m
+  * and 5-10 m tall, pipes of radius 0.05-0.3 m, every position scaled with the yard. */
 Generated
 buildIndustrial (const Params& prm, SceneRandom& rng)
 {
-  const double size = 20.0, wall_h = 6.0;
-  const double plat = 6.0, plat_h = 2.0;             // platform x in [0, 6], y in [14, 20]
-  const double tank_r = 1.5, tank_h = 8.0;
-  const Eigen::Vector3d tanks[] = {{11.0, 15.0, 0.0}, {16.0, 15.0, 0.0}};
+  LayoutDraw draw (prm.layout);
+  const double size = draw (20.0, 14.0, 26.0), wall_h = draw (6.0, 4.0, 8.0);
+  // Platform x in [0, plat], y in [size - plat, size].
+  const double plat = draw (6.0, 0.2 * size, 0.3 * size), plat_h = draw (2.0, 1.0, 3.0);
+  const double tank_r = draw (1.5, 0.8, 1.5), tank_h = draw (8.0, 5.0, 10.0);
+  // For other layouts every position keeps its share of the yard and of the wall height.
+  const double f = size / 20.0, h = wall_h / 6.0;
+  const Eigen::Vector3d tanks[] = {{11.0 * f, 15.0 * f, 0.0}, {16.0 * f, 15.0 * f, 0.0}};
   struct Pipe { Eigen::Vector3d base, axis; double length, radius; };
   const Pipe pipes[] = {
-    {{0.0, 6.0, 3.0}, Eigen::Vector3d::UnitX (), size, 0.2},   // horizontal, from the side wall
-    {{19.0, 0.0, 2.0}, Eigen::Vector3d::UnitY (), size, 0.15}, // horizontal, into the back wall
-    {{4.0, 9.0, 0.0}, Eigen::Vector3d::UnitZ (), 6.0, 0.25},   // vertical riser
-    {{8.0, 3.0, 0.0}, Eigen::Vector3d::UnitZ (), 5.0, 0.1}};   // vertical riser
+    // horizontal, from the side wall
+    {{0.0, 6.0 * f, 3.0 * h}, Eigen::Vector3d::UnitX (), size, draw (0.2, 0.05, 0.3)},
+    // horizontal, into the back wall
+    {{19.0 * f, 0.0, 2.0 * h}, Eigen::Vector3d::UnitY (), size, draw (0.15, 0.05, 0.3)},
+    // vertical risers
+    {{4.0 * f, 9.0 * f, 0.0}, Eigen::Vector3d::UnitZ (), wall_h, draw (0.25, 0.05, 0.3)},
+    {{8.0 * f, 3.0 * f, 0.0}, Eigen::Vector3d::UnitZ (), 5.0 * h, draw (0.1, 0.05, 0.3)}};
 
   Generated g;
   g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (size, size, tank_h + tank_r)};
@@ -664,12 +742,19 @@ rectTarget (const Rect& r, std::uint32_t label)
   * Noise is applied along the ray (range noise). Candidate planes: floor, ceiling, 4 walls, a
   * door 0.9 x 2.0 m standing 2 cm proud of the far wall, a table top and its front panel, and a
   * cabinet against the near wall (front, side and top visible) -- 12 in all. Curved: a pillar
-  * (cylinder r = 0.3 m, floor to ceiling) and a ball (sphere r = 0.3 m on the floor). */
+  * (cylinder r = 0.3 m, floor to ceiling) and a ball (sphere r = 0.3 m on the floor). For
+  * layout > 0: 4.5-8 x 4-6.5 x 2.4-3.5 m, the sensor 1.3-1.8 m high, the table 0.7-0.8 m and the
+  * cabinet 0.8-1.2 m high, pillar radius 0.15-0.4 m, ball radius 0.2-0.45 m, every x and y
+  * position scaled with the room. */
 Generated
 buildRoom (const Params& prm, SceneRandom& rng)
 {
-  const double lx = 6.0, ly = 5.0, lz = 3.0;
-  const Eigen::Vector3d sensor (1.5, 1.5, 1.6);
+  LayoutDraw draw (prm.layout);
+  const double lx = draw (6.0, 4.5, 8.0), ly = draw (5.0, 4.0, 6.5), lz = draw (3.0, 2.4, 3.5);
+  // For other layouts x and y positions keep their share of the room; heights are drawn.
+  const double fx = lx / 6.0, fy = ly / 5.0;
+  const Eigen::Vector3d sensor (1.5 * fx, 1.5 * fy, draw (1.6, 1.3, 1.8));
+  const double table_h = draw (0.75, 0.7, 0.8), cabinet_h = draw (1.0, 0.8, 1.2);
   Generated g;
   g.extent = {Eigen::Vector3d::Zero (), Eigen::Vector3d (lx, ly, lz)};
   g.has_sensor = true;
@@ -684,27 +769,32 @@ buildRoom (const Params& prm, SceneRandom& rng)
   targets.push_back (rectTarget (axisRect (1, 0.0, 0.0, lx, 0.0, lz), ++label));   // wall y = 0
   targets.push_back (rectTarget (axisRect (1, ly, 0.0, lx, 0.0, lz), ++label));    // wall y = 5
   // Door on the far wall, 2 cm proud of it (one slab face; its 2 cm edges are negligible).
-  targets.push_back (rectTarget (axisRect (1, ly - 0.02, 3.5, 4.4, 0.0, 2.0), ++label));
+  targets.push_back (rectTarget (axisRect (1, ly - 0.02, 3.5 * fx, 4.4 * fx, 0.0, 2.0), ++label));
   // Table: 1.2 x 0.8 m top at 0.75 m, with a modesty panel under its sensor-facing edge.
-  targets.push_back (rectTarget (axisRect (2, 0.75, 3.0, 4.2, 2.5, 3.3), ++label));
-  targets.push_back (rectTarget (axisRect (1, 2.5, 3.0, 4.2, 0.05, 0.75), ++label));
+  targets.push_back (
+    rectTarget (axisRect (2, table_h, 3.0 * fx, 4.2 * fx, 2.5 * fy, 3.3 * fy), ++label));
+  targets.push_back (
+    rectTarget (axisRect (1, 2.5 * fy, 3.0 * fx, 4.2 * fx, 0.05, table_h), ++label));
   // Cabinet 0.8 x 0.8 x 1.0 m against wall y = 0, low enough for the sensor to see its top; the
   // faces the sensor cannot see are not modelled.
-  targets.push_back (rectTarget (axisRect (0, 3.0, 0.0, 0.8, 0.0, 1.0), ++label));  // front
-  targets.push_back (rectTarget (axisRect (1, 0.8, 3.0, 3.8, 0.0, 1.0), ++label));  // side
-  targets.push_back (rectTarget (axisRect (2, 1.0, 3.0, 3.8, 0.0, 0.8), ++label));  // top
+  targets.push_back (
+    rectTarget (axisRect (0, 3.0 * fx, 0.0, 0.8 * fy, 0.0, cabinet_h), ++label));      // front
+  targets.push_back (
+    rectTarget (axisRect (1, 0.8 * fy, 3.0 * fx, 3.8 * fx, 0.0, cabinet_h), ++label)); // side
+  targets.push_back (
+    rectTarget (axisRect (2, cabinet_h, 3.0 * fx, 3.8 * fx, 0.0, 0.8 * fy), ++label)); // top
   g.num_candidates = label;
 
   RayTarget pillar;
   pillar.type = RayTarget::Type::VerticalCylinder;
-  pillar.centre = Eigen::Vector3d (4.8, 3.8, 0.0);
-  pillar.radius = 0.3;
+  pillar.centre = Eigen::Vector3d (4.8 * fx, 3.8 * fy, 0.0);
+  pillar.radius = draw (0.3, 0.15, 0.4);
   pillar.height = lz;
   targets.push_back (pillar);
   RayTarget ball;
   ball.type = RayTarget::Type::Sphere;
-  ball.centre = Eigen::Vector3d (1.0, 3.8, 0.3);
-  ball.radius = 0.3;
+  ball.radius = draw (0.3, 0.2, 0.45);
+  ball.centre = Eigen::Vector3d (1.0 * fx, 3.8 * fy, ball.radius);
   targets.push_back (ball);
 
   const std::size_t rays = prm.num_points - prm.num_outliers;
@@ -803,6 +893,7 @@ makeScene (const std::string& name, const SceneOptions& options)
   Params prm;
   prm.num_points = options.num_points > 0 ? options.num_points : spec->default_points;
   prm.noise = options.noise >= 0.0 ? options.noise : spec->default_noise;
+  prm.layout = options.layout;
   const double ratio = options.outlier_ratio >= 0.0 ? options.outlier_ratio
                                                     : spec->default_outliers;
   prm.num_outliers = std::min (prm.num_points, static_cast<std::size_t> (

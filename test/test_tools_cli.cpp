@@ -48,6 +48,19 @@ TEST (MakeSceneCli, WritesCloudAndTruthOfTheRequestedSize)
   EXPECT_NE (pcd.find ("DATA binary"), std::string::npos);
 }
 
+TEST (MakeSceneCli, LayoutDrawsAnotherStaircase)
+{
+  REQUIRE_TOOL (tool, "rspd_make_scene");
+  rspd_test::TempDir dir;
+  const auto nominal = runTool (tool, {"staircase", dir.file ("a"), "-n", "3000"});
+  const auto other = runTool (tool, {"staircase", dir.file ("b"), "-n", "3000", "--layout", "1"});
+  ASSERT_EQ (nominal.status, 0) << nominal.err;
+  ASSERT_EQ (other.status, 0) << other.err;
+  EXPECT_NE (nominal.out.find ("30 planes"), std::string::npos) << nominal.out;
+  EXPECT_EQ (other.out.find ("30 planes"), std::string::npos) << other.out;
+  EXPECT_NE (rspd_test::fileText (dir.file ("a.pcd")), rspd_test::fileText (dir.file ("b.pcd")));
+}
+
 TEST (MakeSceneCli, ListsScenesAndRefusesBadUsage)
 {
   REQUIRE_TOOL (tool, "rspd_make_scene");
@@ -58,6 +71,7 @@ TEST (MakeSceneCli, ListsScenesAndRefusesBadUsage)
   EXPECT_EQ (runTool (tool, {}).status, 2);
   EXPECT_EQ (runTool (tool, {"no_such_scene", "/tmp/x"}).status, 2);
   EXPECT_EQ (runTool (tool, {"cube", "/tmp/x", "-n", "many"}).status, 2);
+  EXPECT_EQ (runTool (tool, {"cube", "/tmp/x", "--layout", "-1"}).status, 2);
   const auto unwritable = runTool (tool, {"cube", "/nonexistent_dir/x", "-n", "100"});
   EXPECT_EQ (unwritable.status, 1);
   EXPECT_EQ (rspd_test::lineCount (unwritable.err), 1) << unwritable.err;
@@ -86,6 +100,7 @@ TEST (MakeSceneCli, MovesAGivenCloudKeepingItsShapeAndOrder)
   }
   EXPECT_TRUE (moved);
   EXPECT_EQ (runTool (tool, {dir.file ("r.pcd"), dir.file ("n"), "-n", "100"}).status, 2);
+  EXPECT_EQ (runTool (tool, {dir.file ("r.pcd"), dir.file ("n"), "--layout", "2"}).status, 2);
   const auto missing = runTool (tool, {dir.file ("none.pcd"), dir.file ("n"), "--rotate"});
   EXPECT_EQ (missing.status, 1);
   EXPECT_EQ (rspd_test::lineCount (missing.err), 1) << missing.err;

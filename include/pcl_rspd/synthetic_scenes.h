@@ -44,6 +44,11 @@ struct SceneOptions
   Eigen::Vector3d offset = Eigen::Vector3d::Zero (); ///< translate after rotating and scaling
   bool shuffle = true;          ///< shuffle sample order (false: generation order, by surface)
   std::uint32_t seed = 1;       ///< random seed; same seed and options give the same scene
+  /** Geometry: 0 draws the documented layout below; any other value draws the scene's dimensions
+    * (sizes, counts, positions, radii) from that number within the ranges makeScene documents,
+    * independently of \a seed, so that detection can be checked on scenes of the same kind that
+    * no default was chosen on. */
+  std::uint32_t layout = 0;
 };
 
 /** \brief A generated scene: cloud, per-point truth and per-point surface kind (same order). */
@@ -64,7 +69,17 @@ struct Scene
   * - "staircase": 15 steps of tread + riser (100k, 0.002, 30 planes)
   * - "facade": 20 x 10 m wall with 15 recessed windows, 15 % outliers (200k, 0.03, 16 planes)
   * - "industrial": 20 m yard, ground, walls, platform, tanks and pipes (300k, 0.005, 6 planes)
+  * - "boxes": 12 x 12 m floor and wall with six boxes of rising roughness (300k, 0.002, 32 planes)
   * - "plane": one noise-free 1 x 1 square (10k, 0, 1 plane)
+  *
+  * With options.layout > 0 the dimensions are drawn instead (uniformly, in metres): the cube is a
+  * box of edges 0.5-1.5; the staircase has 8-20 steps 0.22-0.36 deep, 0.14-0.21 high and 0.8-1.6
+  * wide; the facade is 12-30 x 6-14 m with 2+ x 2+ windows of 0.9-2.0 x 1.0-2.2 m recessed
+  * 0.1-0.35 m; the industrial yard is 14-26 m with walls of 4-8 m, a platform a fifth to a third of
+  * the yard, tanks of radius 0.8-1.5 m and pipes of 0.05-0.3 m; the room is 4.5-8 x 4-6.5 x
+  * 2.4-3.5 m with its furniture, pillar (r 0.15-0.4) and ball (r 0.2-0.45) placed in proportion and
+  * the sensor 1.3-1.8 m high; the boxes are 1.0-2.0 x 0.7-1.3 m. Noise and outliers keep their
+  * defaults, which are absolute. The plane scene has one layout.
   */
 std::vector<std::string>
 sceneNames ();
