@@ -176,6 +176,67 @@ applyChoices (std::vector<std::uint32_t>& open, std::vector<std::uint32_t>& choi
   return added;
 }
 
+/** The shell, in robust standard deviations of a plane, where its Gaussian noise leaves next to
+  * nothing (a 6.8·10⁻⁶ share beyond 4.5 σ, under one sample of a 100,000-sample plane) and the samples
+  * beside it that no plane holds are clutter; near enough that the Tails rule's conditions pass
+  * about as often there as in the tail. */
+constexpr double kClutterShellFrom = 4.5, kClutterShellTo = 6.0;
+
+/** φ(0), the standard normal density at 0. */
+constexpr double kInvSqrtTwoPi = 0.3989422804014327;
+
+/** Tail odds (departure, DetectorParameters::tail_odds): lowers each plane's tail limit to where its
+  * Gaussian noise is no longer likelier than the clutter around it. Per plane, the clutter's density
+  * per unit |d| is read from the samples no plane holds that lie beside it (most of their neighbours
+  * are its members, their normals pass its MND, as the Tails rule asks) in the shell
+  * kClutterShellFrom-kClutterShellTo σ; the noise's is N · 2φ(|d| / σ) for N members; they meet at
+  * x σ, x = sqrt (2 ln (2 N φ(0) · width / count)). The limit stays within [kBandSigmas, kTailSigmas]
+  * σ: a clean plane keeps the 4 σ tail, and a plane in dense clutter its 3 σ band. Footprint and
+  * density cancel, so nothing here has a unit. */
+void
+boundTailsByClutter (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
+                     const std::vector<double>& median, const std::vector<std::uint32_t>& labels,
+                     std::vector<double>& tail_limit)
+{
+  std::vector<std::size_t> shell (patches.size (), 0);
+  for (std::uint32_t i = 0; i < labels.size (); ++i)
+  {
+    if (labels[i] != kNoPatch)
+      continue;
+    std::uint32_t first = kNoPatch;
+    bool several = false;
+    int held = 0, neighbours = 0;
+    graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+      const std::uint32_t l = labels[n];
+      if (l != kNoPatch && first == kNoPatch)
+        first = l;
+      several = several || (l != kNoPatch && l != first);
+      held += l != kNoPatch;
+      ++neighbours;
+    });
+    if (first == kNoPatch || several || 2 * held <= neighbours || std::isnan (median[first]))
+      continue;
+    const PlanarPatch& patch = patches[first];
+    const double sigma = kMadScale * median[first];
+    const double d = std::abs ((points.points[i].cast<double> () - patch.center).dot (patch.normal));
+    if (d >= kClutterShellFrom * sigma && d < kClutterShellTo * sigma &&
+        std::abs (points.normals[i].cast<double> ().dot (patch.normal)) >= patch.cos_mnd)
+      ++shell[first];
+  }
+  for (std::size_t l = 0; l < patches.size (); ++l)
+  {
+    if (shell[l] == 0 || std::isnan (median[l]))
+      continue;
+    const double sigma = kMadScale * median[l];
+    // Densities per unit |d| / σ: the noise's at 0 (2 φ(0) N), the clutter's (flat).
+    const double noise = 2.0 * kInvSqrtTwoPi * static_cast<double> (patches[l].members.size ());
+    const double clutter = static_cast<double> (shell[l]) / (kClutterShellTo - kClutterShellFrom);
+    const double x = noise > clutter ? std::sqrt (2.0 * std::log (noise / clutter)) : 0.0;
+    const double bound = std::max (patches[l].mdp, std::clamp (x, kBandSigmas, kTailSigmas) * sigma);
+    tail_limit[l] = std::min (tail_limit[l], bound);
+  }
+}
+
 /** Last assignment pass (departure, DetectorParameters::final_assignment): a sample no patch holds
   * joins the plane of a graph neighbour whose distance band it lies in (|d| <= MDP; the nearest
   * relative to MDP when several do, ties to the lower label), provided it is also among that
@@ -202,7 +263,9 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   const bool tails = params.final_assignment == FinalAssignment::Tails;
   // One median per plane serves both of Tails' bounds.
   const std::vector<double> median = tails ? medianDistances (points, params, patches) : std::vector<double> ();
-  const std::vector<double> tail_limit = tails ? bandsOf (patches, median, kTailSigmas) : std::vector<double> ();
+  std::vector<double> tail_limit = tails ? bandsOf (patches, median, kTailSigmas) : std::vector<double> ();
+  if (tails && params.tail_odds)
+    boundTailsByClutter (points, graph, patches, median, labels, tail_limit);
   const std::vector<double> edge_limit = tails ? bandsOf (patches, median, kBandSigmas) : std::vector<double> ();
   std::vector<std::uint32_t> left;
   for (std::uint32_t i = 0; i < labels.size (); ++i)

@@ -464,6 +464,62 @@ TEST (RobustPlaneSegmentation, TailsAssignmentTakesThePlanesNoiseTailOnly)
   EXPECT_EQ (clutter_far[1], clutter_far[0]);
 }
 
+TEST (RobustPlaneSegmentation, TailOddsEndTheTailInClutterAndKeepItOnACleanPlane)
+{
+  // A plane with Gaussian noise (σ = 1 % of its side) in clutter dense enough (3,000 samples over
+  // ±20 σ) to outnumber its noise beyond about 3.1 σ: with tail odds the last assignment takes far
+  // fewer clutter samples at 3.5-4.5 σ than the 4 σ tail does, and loses few of the plane's own.
+  // Without clutter the tail is the 4 σ one: the labels are the same either way.
+  const float sigma = 0.01f;
+  const int on_plane = 20000;
+  auto clean = std::make_shared<Cloud> ();
+  std::mt19937 rng (5);
+  std::uniform_real_distribution<float> u (0.0f, 1.0f);
+  std::normal_distribution<float> noise (0.0f, sigma);
+  for (int i = 0; i < on_plane; ++i)
+    clean->push_back (pcl::PointXYZ (u (rng), u (rng), noise (rng)));
+  auto cluttered = std::make_shared<Cloud> (*clean);
+  for (int i = 0; i < 3000; ++i)
+    cluttered->push_back (pcl::PointXYZ (u (rng), u (rng), 40.0f * sigma * (u (rng) - 0.5f)));
+
+  const auto run = [] (const std::shared_ptr<Cloud>& cloud, bool odds) {
+    pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+    seg.setInputCloud (cloud);
+    seg.setTailOdds (odds);
+    EXPECT_EQ (seg.getTailOdds (), odds);
+    return labelsOf (seg);
+  };
+  const auto clean_labels = run (clean, true);
+  EXPECT_EQ (clean_labels, run (clean, false));
+  EXPECT_EQ (*std::max_element (clean_labels.begin (), clean_labels.end ()), 1u);
+
+  // (The clutter may hold a plane of its own, by position; only the plane's tail is counted.)
+  std::size_t own[2] = {0, 0}, far_clutter[2] = {0, 0};
+  for (const bool odds : {false, true})
+  {
+    const auto labels = run (cluttered, odds);
+    std::map<std::uint32_t, int> votes;
+    for (int i = 0; i < on_plane; ++i)
+      ++votes[labels[i]];
+    const auto plane = std::max_element (votes.begin (), votes.end (), [] (const auto& a, const auto& b) {
+                         return a.second < b.second; })->first;
+    ASSERT_NE (plane, 0u);
+    for (int i = 0; i < static_cast<int> (labels.size ()); ++i)
+    {
+      if (labels[i] != plane)
+        continue;
+      const float z = std::abs ((*cluttered)[i].z) / sigma;
+      if (i < on_plane)
+        ++own[odds];
+      else if (z > 3.5f && z <= 4.5f)
+        ++far_clutter[odds];
+    }
+  }
+  EXPECT_GT (far_clutter[0], 10u);
+  EXPECT_LT (2 * far_clutter[1], far_clutter[0]);
+  EXPECT_GE (own[1] + on_plane / 500u, own[0]); // 0.2 %: the tail beyond 3.1 σ holds 0.19 %
+}
+
 TEST (RobustPlaneSegmentation, TailsAssignmentTakesSamplesInsideThePlaneWhateverTheirNormal)
 {
   // A noisy plane whose given normals are exact but for every 20th sample's, which lies in the plane.

@@ -489,6 +489,16 @@ public:
   bool
   getPositionPlanes () const { return params_.position_planes; }
 
+  /** \brief Tail odds (default true; false = every plane's 4 σ tail): the last assignment takes a
+    * plane's noise tail only as far as its noise stays likelier than the clutter measured beside it
+    * (between 3 and 4 σ), so that outliers in a plane's band stay out where they outnumber its
+    * samples. See pcl::rspd::DetectorParameters::tail_odds. */
+  void
+  setTailOdds (bool enable);
+  /** \brief Whether each plane's tail ends where the clutter beside it outweighs its noise. */
+  bool
+  getTailOdds () const { return params_.tail_odds; }
+
   /** \brief Normals turn at a hinge (default true; false = positions alone): a seed or a group of
     * cells is bent at an edge, and seeds nothing, only if its two sides' mean normals turn by more
     * than 90° minus T1's angle as their planes do. See

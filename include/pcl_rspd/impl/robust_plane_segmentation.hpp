@@ -355,6 +355,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setPositionPlanes (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setTailOdds (bool enable)
+{
+  params_.tail_odds = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setHingeNormalTurn (bool enable)
 {
   params_.hinge_normal_turn = enable;
