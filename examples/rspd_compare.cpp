@@ -109,6 +109,7 @@ struct Options
   long long scene_layout = 0;
   bool scene_points_set = false;
   bool scene_seed_set = false;
+  bool scene_layout_set = false;
   int k = 50;
   int threads = 0;              // 0: OpenMP's default
   double voxel = 0.01;
@@ -180,7 +181,7 @@ parseArguments (int argc, char** argv)
       if (!parseInteger (v, 0, std::numeric_limits<std::uint32_t>::max (), number))
         throw UsageError{"--layout needs an integer from 0 to 4294967295 (got '" + v + "')"};
       o.scene_layout = number;
-      o.scene_seed_set = true;
+      o.scene_layout_set = true;
     }
     else if (arg == "-k" || arg == "--neighbours" || arg == "--neighbors")
     {
@@ -242,7 +243,7 @@ parseArguments (int argc, char** argv)
   }
   else
   {
-    if (o.scene_points_set || o.scene_seed_set)
+    if (o.scene_points_set || o.scene_seed_set || o.scene_layout_set)
       throw UsageError{"-n, --seed and --layout only apply to --scene"};
     if (positional.empty ())
       throw UsageError{"no input: give CLOUD or --scene NAME"};

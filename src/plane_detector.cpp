@@ -176,6 +176,37 @@ applyChoices (std::vector<std::uint32_t>& open, std::vector<std::uint32_t>& choi
   return added;
 }
 
+/** What a sample's graph neighbours hold: the first plane met, whether another plane is met too,
+  * how many are held and how many there are. The Tails rule and the tail odds read it alike. */
+struct NeighbourLabels
+{
+  std::uint32_t first = kNoPatch;
+  bool several = false;
+  int held = 0, neighbours = 0;
+
+  /** Inside one plane: every held neighbour holds \a first, and they are most of the neighbours. */
+  bool
+  insideOne () const
+  {
+    return first != kNoPatch && !several && 2 * held > neighbours;
+  }
+};
+
+NeighbourLabels
+labelsAround (const NeighborGraph& graph, const std::vector<std::uint32_t>& labels, std::uint32_t i)
+{
+  NeighbourLabels a;
+  graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+    const std::uint32_t l = labels[n];
+    if (l != kNoPatch && a.first == kNoPatch)
+      a.first = l;
+    a.several = a.several || (l != kNoPatch && l != a.first);
+    a.held += l != kNoPatch;
+    ++a.neighbours;
+  });
+  return a;
+}
+
 /** The shell, in robust standard deviations of a plane, where its Gaussian noise leaves next to
   * nothing (a 6.8·10⁻⁶ share beyond 4.5 σ, under one sample of a 100,000-sample plane) and the samples
   * beside it that no plane holds are clutter; near enough that the Tails rule's conditions pass
@@ -203,18 +234,9 @@ boundTailsByClutter (const PointSet& points, const NeighborGraph& graph, const s
   {
     if (labels[i] != kNoPatch)
       continue;
-    std::uint32_t first = kNoPatch;
-    bool several = false;
-    int held = 0, neighbours = 0;
-    graph.forEachNeighbor (i, [&] (std::uint32_t n) {
-      const std::uint32_t l = labels[n];
-      if (l != kNoPatch && first == kNoPatch)
-        first = l;
-      several = several || (l != kNoPatch && l != first);
-      held += l != kNoPatch;
-      ++neighbours;
-    });
-    if (first == kNoPatch || several || 2 * held <= neighbours || std::isnan (median[first]))
+    const NeighbourLabels around = labelsAround (graph, labels, i);
+    const std::uint32_t first = around.first;
+    if (!around.insideOne () || std::isnan (median[first]))
       continue;
     const PlanarPatch& patch = patches[first];
     const double sigma = kMadScale * median[first];
@@ -292,22 +314,12 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
       bool beside_one = false; // Tails: the sample's labelled neighbours all hold one plane
       if (edges_only)
       {
-        std::uint32_t first = kNoPatch;
-        bool several = false;
-        int held = 0, neighbours = 0;
-        graph.forEachNeighbor (i, [&] (std::uint32_t n) {
-          const std::uint32_t l = labels[n];
-          if (l != kNoPatch && first == kNoPatch)
-            first = l;
-          several = several || (l != kNoPatch && l != first);
-          held += l != kNoPatch;
-          ++neighbours;
-        });
+        const NeighbourLabels around = labelsAround (graph, labels, i);
         // A tail sample lies inside its plane: most of its neighbours are members. (Beside the
         // plane's rim, the unlabelled samples may be a surface no seed reached.)
-        if (!several && !(tails && first != kNoPatch && 2 * held > neighbours))
+        if (!around.several && !(tails && around.insideOne ()))
           continue;
-        beside_one = !several;
+        beside_one = !around.several;
       }
       const Eigen::Vector3d p = points.points[i].cast<double> ();
       double best = HUGE_VAL;

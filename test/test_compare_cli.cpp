@@ -209,6 +209,8 @@ TEST (CompareCli, UsageErrorsExitTwo)
       {"a.pcd", "--voxel", "-1"},                    // bad voxel
       {"a.pcd", "--phases", "0"},                    // no grid
       {"a.pcd", "-n", "100"},                        // -n without --scene
+      {"a.pcd", "--layout", "2"},                    // --layout without --scene
+      {"--scene", "cube", "--layout", "x"},          // bad layout
       {"a.pcd", "b.gt", "c.gt"},                     // too many files
       {"a.pcd", "--frobnicate"},                     // unknown option
   };
