@@ -23,11 +23,14 @@ namespace rspd
   *
   * The samples no plane holds, but for those inside the noise band of a plane a neighbour holds (its
   * tail: on one side of a face's plane at its rim, it would curl the face's quadric), are cut into
-  * the parts the k-NN graph connects. In each part of ε or more, a plane is fitted from up to 32
-  * starts (a sample and its neighbours in the part, spread over it in index order): the samples
-  * connected to the start within 3 \a noise of the plane are its members, the plane is their
+  * the parts the k-NN graph connects. In each part of ε or more, a plane is fitted from 32 starts,
+  * or 4 per ε samples of the part if that is more (a sample and its neighbours in the part, spread
+  * over it in index order; a start inside the members an earlier start settled on is skipped): the
+  * samples connected to the start within 3 \a noise of the plane are its members, the plane is their
   * least-squares plane again, until they no longer change. The plane with the most members, trimmed
-  * to kRefitTrimSigmas of their own robust σ, is kept if it has ε of them, they are no noisier than
+  * to kRefitTrimSigmas of their own robust σ, is kept if ε members lie within 3 σ of the trimmed
+  * ones' plane (its support: the trim takes 1.2 % of a Gaussian plane's samples, and the last
+  * assignment gives them back), the trimmed ones are no noisier than
   * \a noise (robust σ of their distances), their quadric bends no more than noise would
   * (chanceBendShare at DetectorParameters::curved_turn_confidence, the curved check's), they are no
   * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
