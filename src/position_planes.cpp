@@ -38,6 +38,13 @@ struct Plane
   Eigen::Vector3d normal = Eigen::Vector3d::Zero ();
 };
 
+/** |d| of sample \a i from the plane through \a center with unit \a normal. */
+double
+distance (const PointSet& points, std::uint32_t i, const Eigen::Vector3d& center, const Eigen::Vector3d& normal)
+{
+  return std::abs ((points.points[i].cast<double> () - center).dot (normal));
+}
+
 /** Least-squares plane of \a samples (leastSquaresPlane; the centred positions need no origin).
   * false: fewer than three or collinear. */
 bool
@@ -54,7 +61,7 @@ collect (const PointSet& points, const NeighborGraph& graph, const std::vector<s
          std::uint32_t& visit)
 {
   const auto near = [&] (std::uint32_t i) {
-    return std::abs ((points.points[i].cast<double> () - plane.center).dot (plane.normal)) <= band;
+    return distance (points, i, plane.center, plane.normal) <= band;
   };
   std::vector<std::uint32_t> out;
   if (!near (start))
@@ -169,7 +176,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
         // the reach, all on one side of the plane at its rim, would curl its quadric.
         std::vector<double> d;
         for (const auto i : best)
-          d.push_back (std::abs ((points.points[i].cast<double> () - best_plane.center).dot (best_plane.normal)));
+          d.push_back (distance (points, i, best_plane.center, best_plane.normal));
         std::vector<double> scratch = d;
         const double bound = kRefitTrimSigmas * kMadScale * medianInPlace (scratch);
         std::vector<std::uint32_t> kept;
@@ -187,11 +194,11 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
         std::vector<double> dc;
         dc.reserve (kept.size ());
         for (const auto i : kept)
-          dc.push_back (std::abs ((points.points[i].cast<double> () - core.center).dot (core.normal)));
+          dc.push_back (distance (points, i, core.center, core.normal));
         const double core_band = kPositionBandSigmas * kMadScale * medianInPlace (dc);
         std::size_t support = 0;
         for (const auto i : best)
-          if (std::abs ((points.points[i].cast<double> () - core.center).dot (core.normal)) <= core_band)
+          if (distance (points, i, core.center, core.normal) <= core_band)
             ++support;
         best = std::move (kept);
         best_plane = core;
@@ -209,7 +216,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       phi.reserve (best.size ());
       for (const auto i : best)
       {
-        d.push_back (std::abs ((points.points[i].cast<double> () - plane.center).dot (plane.normal)));
+        d.push_back (distance (points, i, plane.center, plane.normal));
         phi.push_back (std::acos (std::min (1.0, std::abs (points.normals[i].cast<double> ().dot (plane.normal)))));
       }
       const RobustSpread ds = robustSpreadInPlace (d);
