@@ -62,7 +62,7 @@ rebuildMembers (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatc
 
 EdgeSideCounts
 settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
-                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, bool corners)
 {
   EdgeSideCounts counts;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (labels.size ());
@@ -133,6 +133,7 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
   };
 
   std::vector<std::uint32_t> next (border.size ());
+  std::vector<char> in_corner (border.size (), 0);
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
   for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (border.size ()); ++k)
   {
@@ -162,7 +163,33 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
       }
     });
     if (beyond)
+    {
       next[k] = best;
+      continue;
+    }
+    if (!corners)
+      continue;
+    // Inside the corner: the sample's projection onto a lies on a's side of b and its projection
+    // onto b on b's side of a, so either plane's noise may have put it there. The likelier plane is
+    // the nearer one, relative to its band (its noise): noise along a's normal moves a's sample
+    // that far off a, along b's normal b's sample that far off b.
+    best_r = std::abs ((p - patches[a].center).dot (patches[a].normal)) / band[a];
+    graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+      const std::uint32_t b = labels[j];
+      if (b == kNoPatch || b == a)
+        return;
+      const int sa = sideOf (a, b), sb = sideOf (b, a);
+      if (sa == kStraddles || sa == kUnjudged || sb == kStraddles || sb == kUnjudged ||
+          sb * across (p, patches[b], patches[a]) < 0.0)
+        return; // (a's side of b holds p: it is not beyond, above)
+      const double r = std::abs ((p - patches[b].center).dot (patches[b].normal)) / band[b];
+      if (r <= 1.0 && (r < best_r || (r == best_r && next[k] != a && b < next[k])))
+      {
+        best_r = r;
+        next[k] = b;
+        in_corner[k] = 1;
+      }
+    });
   }
 
   bool changed = false;
@@ -172,7 +199,7 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
     if (next[k] == labels[i])
       continue;
     changed = true;
-    (next[k] == kNoPatch ? counts.released : counts.moved) += 1;
+    (next[k] == kNoPatch ? counts.released : in_corner[k] ? counts.cornered : counts.moved) += 1;
     labels[i] = next[k];
   }
   if (changed)

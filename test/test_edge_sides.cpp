@@ -103,6 +103,47 @@ TEST (EdgeSides, SamplesBeyondTheLineGoToThePlaneWhoseSideTheyAreOn)
   EXPECT_EQ (patches[0].members.size () + patches[1].members.size (), s.size ());
 }
 
+TEST (EdgeSides, SamplesInsideTheCornerGoToTheNearerPlane)
+{
+  // Inside the step (x > 0, z < 0) noise can put a sample of either plane; near the nose, give each
+  // such sample to the plane it is farther from, as growth may have. With corners on, each goes to
+  // the nearer plane (bands equal); with corners off, the beyond rule leaves them all as they were.
+  const Nose nose = makeNose (11);
+  const PointSet& s = nose.set;
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
+  std::vector<std::uint32_t> nearest = nearestLabels (s, nose.planes);
+  std::vector<std::uint32_t> start = nearest;
+  std::size_t swapped = 0;
+  const auto inCorner = [&s] (std::size_t i) {
+    const Eigen::Vector3f& p = s.points[i];
+    return p.x () > 0 && p.z () < 0 && p.x () < 0.012f && p.z () > -0.012f;
+  };
+  for (std::size_t i = 0; i < s.size (); ++i)
+    if (inCorner (i))
+    {
+      start[i] = 1 - nearest[i];
+      ++swapped;
+    }
+  ASSERT_GT (swapped, 3u); // the test needs some
+
+  std::vector<std::uint32_t> on = start, off = start;
+  std::vector<PlanarPatch> p_on = patchesOf (on, nose.planes), p_off = patchesOf (off, nose.planes);
+  const EdgeSideCounts c_on = settleEdgeSides (s, g, {0.012, 0.012}, 1, p_on, on, true);
+  const EdgeSideCounts c_off = settleEdgeSides (s, g, {0.012, 0.012}, 1, p_off, off, false);
+  EXPECT_EQ (c_on.cornered, swapped);
+  EXPECT_EQ (c_on.released, 0u);
+  EXPECT_EQ (c_off.cornered, 0u);
+  for (std::size_t i = 0; i < s.size (); ++i)
+    if (inCorner (i))
+    {
+      EXPECT_EQ (on[i], nearest[i]) << i;
+      EXPECT_EQ (off[i], start[i]) << i;
+    }
+  for (std::uint32_t l = 0; l < 2; ++l)
+    for (const auto m : p_on[l].members)
+      EXPECT_EQ (on[m], l);
+}
+
 TEST (EdgeSides, PlaneThatStraddlesTheOtherKeepsItsSamples)
 {
   // A wall x = 0 over z in [-0.25, 0.25] and a shelf z = 0 out of it over x in [0, 0.5]. The wall

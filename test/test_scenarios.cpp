@@ -1773,7 +1773,8 @@ TEST (SharedData, SynPebPc01OnPclNormalsNeedsBentSidesWithinTheirPlanesMnd)
   // On PCL's k = 50 normals (as rspd_compare shares them) MND reaches 70° on planes over two box
   // faces; each side, as noisy, failed T2 (60°) and the plane stayed whole: 47 of 60, F1 0.888.
   // Sides held to the MND of the plane they were cut from: 52, 0.915 (measured; 53, 0.926 with the
-  // shifted grid, and 47, 0.897 with it but without the bound: measured without it here).
+  // shifted grid, and 47, 0.897 with it but without the bound: measured without it here; with the
+  // edge corners of issue #6's thirty-eighth session 52, 0.928 and 47, 0.905).
   pcl::rspd::Scene scene;
   scene.cloud = cloud;
   scene.labels = truth;
@@ -1791,7 +1792,7 @@ TEST (SharedData, SynPebPc01OnPclNormalsNeedsBentSidesWithinTheirPlanesMnd)
   EXPECT_GE (bounded.score.f1, 0.91);
   EXPECT_EQ (bounded.score.false_planes, 0);
   EXPECT_LE (paper.score.found, 48);
-  EXPECT_LT (paper.score.f1, 0.895);
+  EXPECT_LT (paper.score.f1, 0.915);
 }
 
 TEST (SharedData, CgalBuildingPseudoTruth)

@@ -21,6 +21,7 @@ struct EdgeSideCounts
 {
   std::size_t moved = 0;    ///< samples given to the other plane
   std::size_t released = 0; ///< samples that left their plane for none
+  std::size_t cornered = 0; ///< samples inside the corner of two planes given to the nearer one
 };
 
 /** \brief Edge sides (departure, DetectorParameters::edge_sides): a sample next to another plane
@@ -38,16 +39,26 @@ struct EdgeSideCounts
   * nearest relative to the band, ties to the lower label), or to none. One pass over the samples that border another plane at its start: it reads the labels
   * before it, so the result does not depend on the thread count, and repeating it would walk a strip
   * along the line where b's plane cuts through a beyond b's extent.
+  *
+  * With \a corners, a sample of a that borders b, whose projection onto a lies on a's side of b and
+  * whose projection onto b lies on b's side of a (inside the corner the two planes make, where noise
+  * along either normal can put a sample of either plane), goes to the nearer plane relative to its
+  * band, when that is b's and b holds it within its band: noise of σ along a's normal moves a's
+  * sample as far off a as it moves b's sample off b, so the nearer plane is the likelier one (the
+  * beyond rule settles only the half of such samples that the noise pushed out of the corner).
+  * Pairs where either plane straddles the other, or has no vote, are left alone here too.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] band per patch, the distance within which its own samples lie (the noise band)
   * \param[in] num_threads OpenMP threads (0: default)
   * \param[in,out] patches members updated (planes kept as they are)
   * \param[in,out] labels per-sample patch label, updated
+  * \param[in] corners whether samples inside a corner go to the nearer plane
+  *            (DetectorParameters::edge_corners)
   */
 EdgeSideCounts
 settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
-                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, bool corners = true);
 
 /** \brief Step sides (departure, DetectorParameters::step_sides): a sample next to a parallel plane
   * (normals within either plane's MND) offset from its own by more than the wider noise band goes to

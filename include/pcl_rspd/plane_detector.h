@@ -342,6 +342,13 @@ struct DetectorParameters
     * of the tread's noise above the nose, which puts it in voxels the riser never enters.
     * false = the paper (and the passes before this one). */
   bool edge_sides = true;
+  /** \brief Departure (edge corners, see settleEdgeSides): with edge_sides, a sample inside the
+    * corner two planes make (its projection onto each on that plane's own side of the other) goes to
+    * the nearer plane relative to its noise band. Noise along either normal can put a sample of
+    * either plane there; the beyond rule settles only the samples the noise pushed out of the
+    * corner, and growth gave the rest to whichever plane reached them first.
+    * false = edge sides as before (issue #6's thirty-eighth session). */
+  bool edge_corners = true;
   /** \brief Departure (thick-cell join, see splitPhase): the split also keeps the largest cells that
     * fail T1 alone (too thick for their extent, planar by T2 and T3) and joins those whose cubes touch
     * and whose planes agree; once growth is stable, what it left of each group of two or more seeds
@@ -605,6 +612,7 @@ struct DetectorStatistics
   std::size_t bent_joined = 0;       ///< of the planes then, those joined to another as one face (joinSplitFaces)
   std::size_t noisy_bent_planes = 0; ///< noisy seeds' planes split at an edge before they are judged flat (noisy_bent_split)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
+  std::size_t edge_cornered = 0;     ///< samples inside a corner given to the nearer plane (edge_corners)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane

@@ -613,6 +613,15 @@ public:
   bool
   getEdgeSides () const { return params_.edge_sides; }
 
+  /** \brief Edge corners (default true; false = edge sides as before): with edge sides on, a sample
+    * inside the corner two planes make goes to the nearer plane relative to its noise band. See
+    * pcl::rspd::settleEdgeSides and pcl::rspd::DetectorParameters::edge_corners. */
+  void
+  setEdgeCorners (bool enable);
+  /** \brief Whether samples inside a corner go to the nearer plane. */
+  bool
+  getEdgeCorners () const { return params_.edge_corners; }
+
   /** \brief Thick-cell join (default true; false = the paper): the split also keeps the largest
     * cells that fail T1 alone (too thick for their extent, planar by T2 and T3), joins touching ones
     * whose planes agree, and seeds a patch from each group that passes T1-T3 as a whole. See

@@ -439,6 +439,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setEdgeSides (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setEdgeCorners (bool enable)
+{
+  params_.edge_corners = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setThickCellJoin (bool enable)
 {
   params_.join_thick_cells = enable;
