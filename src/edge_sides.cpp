@@ -39,6 +39,14 @@ across (const Eigen::Vector3d& p, const PlanarPatch& a, const PlanarPatch& b)
   return (q - b.center).dot (b.normal);
 }
 
+/** p's distance to plane \a l in units of its noise band. */
+double
+relativeDistance (const Eigen::Vector3d& p, const std::vector<PlanarPatch>& patches, const std::vector<double>& band,
+                  std::uint32_t l)
+{
+  return std::abs ((p - patches[l].center).dot (patches[l].normal)) / band[l];
+}
+
 /** Normals farther apart than either plane's MND: the pair meets along a line worth judging. */
 bool
 distinct (const PlanarPatch& a, const PlanarPatch& b)
@@ -153,7 +161,7 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
         return;
       beyond = true;
       const int sb = sideOf (b, a);
-      const double r = std::abs ((p - patches[b].center).dot (patches[b].normal)) / band[b];
+      const double r = relativeDistance (p, patches, band, b);
       // b straddling a has no side of a to keep to; b with no vote is not trusted with the sample.
       if (sb != kUnjudged && (sb == kStraddles || sb * across (p, patches[b], patches[a]) >= 0.0) && r <= 1.0 &&
           (r < best_r || (r == best_r && b < best)))
@@ -173,7 +181,7 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
     // onto b on b's side of a, so either plane's noise may have put it there. The likelier plane is
     // the nearer one, relative to its band (its noise): noise along a's normal moves a's sample
     // that far off a, along b's normal b's sample that far off b.
-    best_r = std::abs ((p - patches[a].center).dot (patches[a].normal)) / band[a];
+    best_r = relativeDistance (p, patches, band, a);
     graph.forEachNeighbor (i, [&] (std::uint32_t j) {
       const std::uint32_t b = labels[j];
       if (b == kNoPatch || b == a)
@@ -181,8 +189,8 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
       const int sa = sideOf (a, b), sb = sideOf (b, a);
       if (sa == kStraddles || sa == kUnjudged || sb == kStraddles || sb == kUnjudged ||
           sb * across (p, patches[b], patches[a]) < 0.0)
-        return; // (a's side of b holds p: it is not beyond, above)
-      const double r = std::abs ((p - patches[b].center).dot (patches[b].normal)) / band[b];
+        return; // p's projection onto a is on a's side of every b here: none was beyond (above)
+      const double r = relativeDistance (p, patches, band, b);
       if (r <= 1.0 && (r < best_r || (r == best_r && next[k] != a && b < next[k])))
       {
         best_r = r;
@@ -240,7 +248,7 @@ settleStepSides (const PointSet& points, const NeighborGraph& graph, const std::
         continue;
       const Eigen::Vector3d p = points.points[i].cast<double> ();
       const auto relative = [&] (std::uint32_t l) {
-        return std::abs ((p - patches[l].center).dot (patches[l].normal)) / band[l];
+        return relativeDistance (p, patches, band, l);
       };
       if (partners[a].size () <= kMaxPartnersChecked &&
           std::none_of (partners[a].begin (), partners[a].end (), [&] (std::uint32_t b) { return relative (b) <= 1.0; }))
