@@ -20,6 +20,7 @@
 #include <pcl_rspd/robust_statistics.h>
 #include <pcl_rspd/seed_groups.h>
 #include <pcl_rspd/step_split.h>
+#include <pcl_rspd/volume_layers.h>
 
 #include <pcl/console/print.h>
 
@@ -432,6 +433,17 @@ judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std:
     ++kept;
   }
   patches.resize (kept);
+}
+
+/** The noisy seeds' planes judged flat that are where a volume of samples ends, not surfaces (volume
+  * layers, departure; see DetectorParameters::volume_layer_check): dropped, their members left to no
+  * plane. */
+void
+dropNoisyVolumeLayers (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
+                       std::vector<PlanarPatch>& patches, DetectorStatistics& st)
+{
+  if (params.volume_layer_check && !patches.empty ())
+    st.volume_layers += dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads, patches);
 }
 
 /** Whether a plane is a facet of a curved surface or a tube (departure, see
@@ -994,6 +1006,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // still be flat (at 10,000 points a pipe is sampled a few times around, and its facets' seeds
     // are too small to tell; at 20,000 the room's ball gave the shifted grid a facet of 26 samples).
     judgeNoisyPlanes (points, params, 0, patches, st);
+    dropNoisyVolumeLayers (points, graph, params, patches, st);
     labels = labelSamples (points.size (), patches);
   }
   if (!joined_left.empty () && !patches.empty ())
@@ -1010,6 +1023,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     {
       growMergeUntilStable (points, graph, params, patches, labels, flags, st);
       judgeNoisyPlanes (points, params, params.min_patch_size, patches, st);
+      dropNoisyVolumeLayers (points, graph, params, patches, st);
       labels = labelSamples (points.size (), patches);
     }
   }

@@ -112,6 +112,9 @@ struct RobustPlane
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth, and tested again
   *    on what growth left of it (setOutlierSeedRetest(false): not), seeding a plane if flat;
+  *  - volume layers (setVolumeLayerCheck(false): kept): a plane such a noisy seed seeded is
+  *    dropped once grown if the samples go on beside its noise band as densely as within it (the
+  *    end of a volume of clutter, not a surface);
   *  - re-estimation within T2 (setBoundedReestimation(false) for the paper): a plane such a noisy
   *    seed seeded keeps its last estimate when a re-estimate's MND fails T2 (60°), where growth
   *    onto the faces around it would otherwise widen MND and MDP until it holds a whole box;
@@ -710,6 +713,17 @@ public:
   /** \brief Whether dropped outlier seeds are tested again. */
   bool
   getOutlierSeedRetest () const { return params_.retest_outlier_seeds; }
+
+  /** \brief Volume layers (default on; false = such planes are kept): a plane a noisy seed seeded
+    * (a retested outlier seed, a group of thick cells) is dropped when the layer beside its noise
+    * band on one side, half as thick as the band, holds more samples than the plane: it is where a
+    * volume of scattered samples (clutter, outliers) ends, not a surface. See
+    * pcl::rspd::dropVolumeLayers and pcl::rspd::DetectorParameters::volume_layer_check. */
+  void
+  setVolumeLayerCheck (bool enable);
+  /** \brief Whether noisy seeds' planes that end a volume of samples are dropped. */
+  bool
+  getVolumeLayerCheck () const { return params_.volume_layer_check; }
 
   /** \brief Curved-surface check (default on; false = the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the

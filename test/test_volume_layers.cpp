@@ -1,0 +1,129 @@
+/*
+ * Tests of the volume-layer check (samplesBesideBand, dropVolumeLayers).
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "test_helpers.h"
+
+#include <pcl_rspd/volume_layers.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace pcl::rspd;
+
+namespace
+{
+/** Samples scattered evenly through a box 2 x 2 x 1 (a volume of clutter), and the plane a noisy
+  * seed would make where the volume ends below: every sixth sample of the bottom 0.2 (the ones whose
+  * cut neighbourhoods give normals across the end), its plane z = 0.1 and band 0.1. The layer beside
+  * the band above, z in (0.2, 0.3], holds half a band's samples, three times as many as the plane. */
+struct VolumeEnd
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<double> band {0.1};
+  NeighborGraph graph;
+
+  explicit VolumeEnd (float scale = 1.0f)
+  {
+    std::mt19937 rng (11);
+    std::uniform_real_distribution<float> u (0.0f, 1.0f);
+    std::vector<std::uint32_t> end;
+    for (int i = 0; i < 6000; ++i)
+    {
+      const Eigen::Vector3f p (2.0f * u (rng), 2.0f * u (rng), u (rng));
+      if (p.z () < 0.2f && i % 6 == 0)
+        end.push_back (static_cast<std::uint32_t> (set.points.size ()));
+      set.points.push_back (scale * p);
+      set.normals.push_back (Eigen::Vector3f::UnitZ ());
+      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
+    }
+    planes = {rspd_test::makePatch (end, scale * Eigen::Vector3d (1.0, 1.0, 0.1), {0, 0, 1}, scale * 0.1, 0.3)};
+    planes[0].retested = true;
+    band[0] *= scale;
+    // k = 50, as the automatic k gives at this size: the footprint's cells (the neighbourhood
+    // radius, 0.2) then hold a few members each, as the facade's slabs' did (8 on average).
+    graph = rspd_test::bruteForceGraph (set.points, 50);
+  }
+};
+
+/** A noisy face (z = 0.5 over 2 x 2, 40 x 40 samples, σ 1 cm) among 300 samples of clutter in the
+  * box around it, held by a plane a noisy seed seeded, band 3 σ. */
+struct NoisyFace
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<double> band {0.03};
+  NeighborGraph graph;
+
+  NoisyFace ()
+  {
+    const std::vector<std::uint32_t> face = rspd_test::addRectangle (set, {0, 0, 0.5f}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 3);
+    std::mt19937 rng (5);
+    std::uniform_real_distribution<float> u (0.0f, 1.0f);
+    for (int i = 0; i < 300; ++i)
+    {
+      set.points.emplace_back (2.0f * u (rng), 2.0f * u (rng), u (rng));
+      set.normals.push_back (Eigen::Vector3f::UnitX ());
+      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
+    }
+    planes = {rspd_test::makePatch (face, {1.0, 1.0, 0.5}, {0, 0, 1}, 0.03, 0.3)};
+    planes[0].retested = true;
+    graph = rspd_test::bruteForceGraph (set.points, 15);
+  }
+};
+} // namespace
+
+TEST (VolumeLayers, TheEndOfAVolumeIsDenserBesideItsBandThanWithin)
+{
+  VolumeEnd v;
+  const std::size_t beside = samplesBesideBand (v.set, v.graph, v.planes[0], v.band[0]);
+  // About 600 samples in (0.2, 0.3] (those over the footprint's cells) against about 200 members.
+  EXPECT_GT (beside, 2 * v.planes[0].members.size ());
+  EXPECT_LT (beside, 4 * v.planes[0].members.size ());
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, v.band, 1, v.planes), 1u);
+  EXPECT_TRUE (v.planes.empty ());
+}
+
+TEST (VolumeLayers, NoisyFaceAmongClutterIsKept)
+{
+  NoisyFace f;
+  // Beside a 3 cm band, a 3 cm layer of the clutter over the face: a handful of samples.
+  EXPECT_LT (samplesBesideBand (f.set, f.graph, f.planes[0], f.band[0]), f.planes[0].members.size () / 20);
+  EXPECT_EQ (dropVolumeLayers (f.set, f.graph, f.band, 1, f.planes), 0u);
+  EXPECT_EQ (f.planes.size (), 1u);
+}
+
+TEST (VolumeLayers, OnlyNoisySeedsPlanesAreJudged)
+{
+  // Two faces of a thin wall lie in each other's layer: a plane from an ordinary seed is not judged.
+  VolumeEnd v;
+  v.planes[0].retested = false;
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, v.band, 1, v.planes), 0u);
+  v.planes[0].joined = true; // a group of thick cells is a noisy seed too
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, v.band, 1, v.planes), 1u);
+}
+
+TEST (VolumeLayers, ScaleAndThreadsDoNotChangeTheCount)
+{
+  VolumeEnd v, mm (1000.0f);
+  const std::size_t beside = samplesBesideBand (v.set, v.graph, v.planes[0], v.band[0]);
+  EXPECT_EQ (samplesBesideBand (mm.set, mm.graph, mm.planes[0], mm.band[0]), beside);
+  std::vector<PlanarPatch> two = {v.planes[0], v.planes[0]};
+  two[1].retested = false;
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, {0.1, 0.1}, 2, two), 1u);
+  ASSERT_EQ (two.size (), 1u);
+  EXPECT_FALSE (two[0].retested); // the order of the planes kept is kept
+}
+
+TEST (VolumeLayers, NothingToJudgeGivesZero)
+{
+  VolumeEnd v;
+  EXPECT_EQ (samplesBesideBand (v.set, v.graph, v.planes[0], 0.0), 0u);
+  EXPECT_EQ (samplesBesideBand (v.set, v.graph, v.planes[0], std::nan ("")), 0u);
+  PlanarPatch empty;
+  EXPECT_EQ (samplesBesideBand (v.set, v.graph, empty, 0.1), 0u);
+  std::vector<PlanarPatch> none;
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, {}, 1, none), 0u);
+}
