@@ -303,7 +303,7 @@ struct DetectorParameters
   /** \brief Departure (position planes, seedPositionPlanes): after the last assignment, the samples no
     * plane holds are searched for planes by their positions alone: in each part the k-NN graph
     * connects, the plane of most samples connected within 3 σ of it (σ of the noisiest plane found),
-    * kept if it has ε, is no noisier than that plane, bends no more than noise (curved_turn_confidence), is
+    * kept if it has ε, is no noisier than that plane (within twice the standard error of its own σ), bends no more than noise (curved_turn_confidence), is
     * no tube, no band layer and lies on no neighbouring plane; its tails are then assigned as the
     * last assignment's. A small face sampled sparsely has PCA normals bent over most of it: the
     * room at 30,000 points (k = 15) left its cabinet's top (70-95 samples, ε = 30) in no plane on
