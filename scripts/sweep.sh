@@ -23,24 +23,16 @@ trap 'rm -rf "$tmp"' EXIT
 
 echo "| row | F1 | precision | recall | found | fragments | false planes | claimed |"
 echo "|---|---|---|---|---|---|---|---|"
-while IFS= read -r line || [ -n "$line" ]; do
-  line=${line%%#*}
-  [[ "$line" == *"|"* ]] || continue
-  tag=$(echo "${line%%|*}" | xargs)
-  spec=$(echo "${line#*|}" | xargs)
-  if [[ "$spec" == @* ]]; then
-    base=$data/${spec#@}
-    [ -f "$base.pcd" ] && [ -f "$base.gt" ] || continue
-  else
-    base=$tmp/scene
-    # shellcheck disable=SC2086
-    "$bin/rspd_make_scene" $spec "$base" > /dev/null
-  fi
-  "$bin/rspd_segment" "$base.pcd" -o "$tmp/out.pcd" "${seg_args[@]}" > /dev/null
-  "$bin/rspd_evaluate" "$base.pcd" "$base.gt" "$tmp/out.pcd" --json | /usr/bin/python3 -c '
+row ()
+{
+  "$bin/rspd_segment" "$2.pcd" -o "$tmp/out.pcd" "${seg_args[@]}" > /dev/null
+  "$bin/rspd_evaluate" "$2.pcd" "$2.gt" "$tmp/out.pcd" --json | /usr/bin/python3 -c '
 import json, sys
 j = json.load(sys.stdin)
 claimed = 100.0 * j["unlabelled_claimed"] / j["unlabelled"] if j["unlabelled"] else 0.0
 print("| %s | %.4f | %.4f | %.4f | %d/%d | %d | %d | %.2f %% |" % (sys.argv[1], j["f1"], j["precision"], j["recall"],
-      j["found"], j["planes"], j["fragments"], j["false_planes"], claimed))' "$tag"
-done < "$rows"
+      j["found"], j["planes"], j["fragments"], j["false_planes"], claimed))' "$1"
+}
+# shellcheck source=scripts/scene_rows.sh
+source scripts/scene_rows.sh
+each_row "$rows" "$tmp" row

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# pcl_rspd with its defaults against the PCL peers that rspd_compare runs, row by row over a sweep
+# list: issue #6's test for the project's own generated scenes.
+#
+#   bash scripts/peer_sweep.sh [ROWS]
+#
+# ROWS as for scripts/sweep.sh (default scripts/sweep_rows.txt). Each row: rspd_segment with its
+# defaults (its own normals) and rspd_evaluate, then rspd_compare --methods sac,rg on the same cloud
+# and truth (the peers on PCL's k = 50 normals). "target" is issue #6's bar: F1 at least 0.02 above
+# the better peer's, or at least 0.99 and not below it, and at least as many planes found as either
+# peer. The last line counts the rows that meet it. Needs a build (scripts/build.sh).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=${RSPD_BIN:-./build} # RSPD_BIN: another build directory
+data=../shared/data
+rows=${1:-scripts/sweep_rows.txt}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+echo "| row | rspd F1 (found, false) | SAC loop F1 (found, false) | RegionGrowing F1 (found, false) | F1 margin | target |"
+echo "|---|---|---|---|---|---|"
+met=0
+total=0
+row ()
+{
+  "$bin/rspd_segment" "$2.pcd" -o "$tmp/out.pcd" > /dev/null
+  "$bin/rspd_evaluate" "$2.pcd" "$2.gt" "$tmp/out.pcd" --json > "$tmp/rspd.json"
+  "$bin/rspd_compare" "$2.pcd" "$2.gt" --methods sac,rg --json > "$tmp/peers.json" 2> /dev/null
+  local verdict
+  verdict=$(/usr/bin/python3 -c '
+import json, sys
+r = json.load(open(sys.argv[1]))
+peers = {m["name"]: m for m in json.load(open(sys.argv[2]))["methods"]}
+def cell(f1, found, planes, false):
+    return "%.4f (%d/%d, %d)" % (f1, found, planes, false)
+cells = [cell(r["f1"], r["found"], r["planes"], r["false_planes"])]
+best_f1, best_found = 0.0, 0
+for name in ("sac", "rg"):
+    m = peers.get(name)
+    if m is None or m.get("status") != "ok":
+        cells.append("failed")
+        continue
+    cells.append(cell(m["f1"], m["found"], m["truth_planes"], m["false_planes"]))
+    best_f1, best_found = max(best_f1, m["f1"]), max(best_found, m["found"])
+margin = r["f1"] - best_f1
+ok = (margin >= 0.02 or (r["f1"] >= 0.99 and margin >= 0.0)) and r["found"] >= best_found
+print("| %s | %s | %+.4f | %s |" % (sys.argv[3], " | ".join(cells), margin, "met" if ok else "**not met**"))
+' "$tmp/rspd.json" "$tmp/peers.json" "$1")
+  echo "$verdict"
+  total=$((total + 1))
+  if [[ "$verdict" == *"| met |" ]]; then met=$((met + 1)); fi
+}
+# shellcheck source=scripts/scene_rows.sh
+source scripts/scene_rows.sh
+each_row "$rows" "$tmp" row
+echo
+echo "target met on $met of $total rows"
