@@ -442,7 +442,9 @@ void
 dropNoisyVolumeLayers (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
                        std::vector<PlanarPatch>& patches, DetectorStatistics& st)
 {
-  if (params.volume_layer_check && !patches.empty ())
+  const bool any_noisy = std::any_of (patches.begin (), patches.end (),
+                                      [] (const PlanarPatch& p) { return p.retested || p.joined; });
+  if (params.volume_layer_check && any_noisy) // the bands read every member: only when one is judged
     st.volume_layers += dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads, patches);
 }
 

@@ -36,7 +36,7 @@ constexpr double kPositionBandSigmas = 3.0;
 constexpr double kRobustSigmaError = 1.166;
 /** A plane may be noisier than the noisiest plane found by this many standard errors of its own σ:
   * as noisy a face is as likely to measure a little above as below. The boxes' roughest box at
-  * 60,000-80,000 points: a face of 380 samples measured σ 3.17 cm against its sibling faces' 3.14
+  * 80,000 points (layout 9): a face of 380 samples measured σ 3.17 cm against its sibling faces' 3.14
   * (debug prints) and was turned down. Every plane the pass keeps is also flat within chance, no
   * layer and no strip of a neighbour. */
 constexpr double kNoiseBoundErrors = 2.0;
@@ -239,7 +239,8 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       // No noisier than the noisiest plane found (within the error of its own σ), flat within
       // chance, no tube, no layer of a plane found and no strip that lies on a neighbouring plane.
       const double sigma = kMadScale * ds.median;
-      const double bound = noise * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
+      const double bound =
+        noise * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
       const PlaneCurvature c = measureCurvature (points, best);
       const bool flat = c.samples == 0 || c.share < chanceBendShare (c.samples, params.curved_turn_confidence);
       if (!(sigma <= bound) || !flat || (c.samples > 0 && isTube (c, plane.mdp)) ||

@@ -276,9 +276,10 @@ struct DetectorParameters
     * on one side, half as thick as the band, holds more than twice as many samples over its
     * footprint as the plane holds: the samples beside it are four times as dense as its own, and it
     * is a share of a volume of scattered samples where the volume ends (whose cut neighbourhoods
-    * give PCA normals across the end), not a surface. The facade with 25 % outliers at 100,000 points kept such a plane on 3 of 7
-    * seeds, a slab 0.9 m thick where the outliers' box ends below or above the wall (1,000-1,500
-    * samples, F1 0.93 -> 0.997). false = such planes are kept. */
+    * give PCA normals across the end), not a surface. The facade with 25 % outliers at 100,000
+    * points kept such a plane on 3 of 7 seeds, a slab up to 0.9 m thick where the outliers' box
+    * ends below or above the wall (1,000-1,500 samples; F1 0.88-0.95 -> 0.995-0.997).
+    * false = such planes are kept. */
   bool volume_layer_check = true;
   /** \brief Departure (M4, coplanar groups): two groups merge only if at least (1 - T3 ratio) of the
     * samples of the group whose representative is smaller lie within the larger representative's
@@ -303,8 +304,8 @@ struct DetectorParameters
   /** \brief Departure (position planes, seedPositionPlanes): after the last assignment, the samples no
     * plane holds are searched for planes by their positions alone: in each part the k-NN graph
     * connects, the plane of most samples connected within 3 σ of it (σ of the noisiest plane found),
-    * kept if it has ε, is no noisier than that plane (within twice the standard error of its own σ), bends no more than noise (curved_turn_confidence), is
-    * no tube, no band layer and lies on no neighbouring plane; its tails are then assigned as the
+    * kept if it has ε, is no noisier than that plane (within twice the standard error of its own
+    * σ), bends no more than noise (curved_turn_confidence), is no tube, no band layer and lies on no neighbouring plane; its tails are then assigned as the
     * last assignment's. A small face sampled sparsely has PCA normals bent over most of it: the
     * room at 30,000 points (k = 15) left its cabinet's top (70-95 samples, ε = 30) in no plane on
     * four of six seeds, every cell of it failing T3 or noisier than every plane found. false = the

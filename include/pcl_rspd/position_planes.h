@@ -32,7 +32,8 @@ namespace rspd
   * ones' plane (its support: the trim takes 1.2 % of a Gaussian plane's samples, and the last
   * assignment gives them back), the trimmed ones are no noisier than
   * \a noise (robust σ of their distances) by more than twice the standard error of that σ (a
-  * face as noisy as the noisiest plane measures a little above it as often as below), their quadric bends no more than noise would
+  * face as noisy as the noisiest plane measures a little above it as often as below), their
+  * quadric bends no more than noise would
   * (chanceBendShare at DetectorParameters::curved_turn_confidence, the curved check's), they are no
   * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
   * their own (liesOnNeighbourPlane); then the part is searched again without them. Where the best

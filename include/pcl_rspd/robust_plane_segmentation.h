@@ -113,8 +113,8 @@ struct RobustPlane
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth, and tested again
   *    on what growth left of it (setOutlierSeedRetest(false): not), seeding a plane if flat;
   *  - volume layers (setVolumeLayerCheck(false): kept): a plane such a noisy seed seeded is
-  *    dropped once grown if the samples go on beside its noise band as densely as within it (the
-  *    end of a volume of clutter, not a surface);
+  *    dropped once grown if the samples beside its noise band are four times as dense as within it
+  *    (the end of a volume of clutter, not a surface);
   *  - re-estimation within T2 (setBoundedReestimation(false) for the paper): a plane such a noisy
   *    seed seeded keeps its last estimate when a re-estimate's MND fails T2 (60°), where growth
   *    onto the faces around it would otherwise widen MND and MDP until it holds a whole box;
@@ -716,8 +716,8 @@ public:
 
   /** \brief Volume layers (default on; false = such planes are kept): a plane a noisy seed seeded
     * (a retested outlier seed, a group of thick cells) is dropped when the layer beside its noise
-    * band on one side, half as thick as the band, holds more samples than the plane: it is where a
-    * volume of scattered samples (clutter, outliers) ends, not a surface. See
+    * band on one side, half as thick as the band, holds more than twice as many samples as the
+    * plane: it is where a volume of scattered samples (clutter, outliers) ends, not a surface. See
     * pcl::rspd::dropVolumeLayers and pcl::rspd::DetectorParameters::volume_layer_check. */
   void
   setVolumeLayerCheck (bool enable);

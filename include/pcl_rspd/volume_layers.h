@@ -39,8 +39,8 @@ samplesBesideBand (const PointSet& points, const NeighborGraph& graph, const Pla
   * twice as many samples as the plane (samplesBesideBand): the samples beside the band are four
   * times as dense as the plane's own, and the plane is a share of a volume of samples where it
   * ends, whose neighbourhoods, cut by the end, give PCA normals across it. A layer of one noisy
-  * face has about as many samples beside it as it holds. Planes found from ordinary seeds are not judged: two faces of a thin
-  * wall lie in each other's layer.
+  * face has about as many samples beside it as it holds. Planes found from ordinary seeds are not
+  * judged: two faces of a thin wall lie in each other's layer.
   * \param[in] points samples
   * \param[in] graph their k-NN graph
   * \param[in] band per plane, the distance within which its noise lies
