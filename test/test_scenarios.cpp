@@ -1772,27 +1772,36 @@ TEST (SharedData, SynPebPc01)
   // 51 -> 52). Two such planes cut at their edges left one face in two parts until the parts of
   // split planes that are one face were joined again (joinSplitFaces: fragments 9 -> 2). Noisy seeds'
   // planes grown over an edge split rather than dropped gave 0.922 -> 0.923 (fragments 2 -> 4; off
-  // by default since the eighteenth session: 0.922).
+  // by default since the eighteenth session: 0.922). Two faces of 271 and 452 samples beside noisier
+  // faces at 24°, whose growth stopped short of ε and whose strips along the edge the neighbours'
+  // bands held, need the small-plane completion (53 -> 55 found, 0.931 -> 0.938, measured).
   const Detection r = detect (cloud, truth);
-  EXPECT_GE (r.score.found, 52);
-  EXPECT_GE (r.score.f1, 0.915);
+  EXPECT_GE (r.score.found, 55);
+  EXPECT_GE (r.score.f1, 0.935);
   EXPECT_LE (r.score.fragments, 4);
+  const Detection uncompleted = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic,
+                                        [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                                          EXPECT_TRUE (s.getSmallPlaneCompletion ());
+                                          s.setSmallPlaneCompletion (false);
+                                        });
+  EXPECT_LE (uncompleted.score.found, 53);
   // Both bent splits off: the later one on every plane, and the one on noisy seeds' planes before
-  // they are judged flat.
+  // they are judged flat (0.85 and 40 found before the small-plane completion, 0.870 and 44 with it,
+  // whose faces beside noisier planes those planes' wider bands then cover more of; measured).
   const auto unbent = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setBentPlaneSplit (false);
     s.setNoisyPlaneBentSplit (false);
   };
   const Detection bent = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, unbent);
-  EXPECT_LT (bent.score.f1, 0.85);
-  EXPECT_LE (bent.score.found, 40);
+  EXPECT_LT (bent.score.f1, 0.89);
+  EXPECT_LE (bent.score.found, 45);
   const auto whole = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setBentPlaneSplit (false);
     s.setNoisyPlaneBentSplit (false);
     s.setConnectedParts (false);
   };
   const Detection merged = detect (cloud, truth, nullptr, true, pcl::rspd::NormalScale::Automatic, whole);
-  EXPECT_LT (merged.score.f1, 0.76);
+  EXPECT_LT (merged.score.f1, 0.79); // 0.76 before the small-plane completion, 0.772 with it
 }
 
 TEST (SharedData, SynPebPc01OnPclNormalsNeedsBentSidesWithinTheirPlanesMnd)

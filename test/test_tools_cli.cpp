@@ -311,6 +311,7 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_FALSE (room == labels ("r.pcd", "room_sides_off.pcd", {"--edge-sides=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_corners_on.pcd", {"--edge-corners", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_volume_on.pcd", {"--volume-layers", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_completion_on.pcd", {"--small-completion", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_corners_off.pcd", {"--edge-corners=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_steps_on.pcd", {"--step-sides", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_thick_on.pcd", {"--thick-join", "on"}));

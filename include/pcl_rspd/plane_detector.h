@@ -281,6 +281,15 @@ struct DetectorParameters
     * ends below or above the wall (1,000-1,500 samples; F1 0.88-0.95 -> 0.995-0.997).
     * false = such planes are kept. */
   bool volume_layer_check = true;
+  /** \brief Departure (small-plane completion, completeSmallPlanes; part of the small-plane pass):
+    * before the pass drops its planes still short of ε, a plane a clean seed seeded that holds at
+    * least half of ε takes the samples within the noise band of its members' least-squares plane that
+    * connect to it and that no plane holds, or that a noisier plane turned from it holds farther
+    * relative to its band; it is kept if that brings it to ε. A small face beside a noisier one
+    * grows short of its rim (its median normal tilted by normals bent over the neighbour) and the
+    * neighbour's wider band holds the strip along their edge: synpeb_pc01 found two faces more (53
+    * -> 55 of 60). false = such planes are dropped. */
+  bool small_plane_completion = true;
   /** \brief Departure (M4, coplanar groups): two groups merge only if at least (1 - T3 ratio) of the
     * samples of the group whose representative is smaller lie within the larger representative's
     * plane (the plane the merged group keeps) by the wider of the two representatives' MDP, or
@@ -610,6 +619,7 @@ struct DetectorStatistics
   std::size_t small_noisy_groups = 0; ///< of those, seeded by groups of seeds too noisy alone (noisy_seed_groups)
   std::size_t small_ladder_seeds = 0; ///< of those, seeded past the first step of the noise ladder (noisy_group_ladder)
   std::size_t small_seeds_beside = 0; ///< of those, no band layer only as faces beside a plane (isBandLayer)
+  std::size_t small_completed = 0;   ///< small-plane pass planes brought to ε by completion (small_plane_completion)
   std::size_t left_refitted = 0;     ///< left samples given a trimmed-plane or narrowed normal (left_normal_refit, left_normal_narrow)
   std::size_t released = 0;          ///< members released as far from their plane (release_far_members)
   std::size_t restored = 0;          ///< of those, given back to their plane

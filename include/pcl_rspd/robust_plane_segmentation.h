@@ -112,6 +112,10 @@ struct RobustPlane
   *  - outlier seeds (setDropOutlierSeeds(false) for the paper): a seed whose MND is an outlier among
   *    all seeds of the split (log scale, median + α·MAD) is dropped before growth, and tested again
   *    on what growth left of it (setOutlierSeedRetest(false): not), seeding a plane if flat;
+  *  - small-plane completion (setSmallPlaneCompletion(false): dropped): a plane the small-plane
+  *    pass seeded that growth left short of ε, but at half of it or more, takes the samples of its
+  *    surface within its noise band that no plane or a noisier plane turned from it holds, and is
+  *    kept if that brings it to ε;
   *  - volume layers (setVolumeLayerCheck(false): kept): a plane such a noisy seed seeded is
   *    dropped once grown if the samples beside its noise band are four times as dense as within it
   *    (the end of a volume of clutter, not a surface);
@@ -713,6 +717,20 @@ public:
   /** \brief Whether dropped outlier seeds are tested again. */
   bool
   getOutlierSeedRetest () const { return params_.retest_outlier_seeds; }
+
+  /** \brief Small-plane completion (default on; false = such planes are dropped, as the ε rule
+    * drops every plane short of ε): before the small-plane pass drops its planes still short of ε, a
+    * plane a clean seed seeded that holds at least half of ε takes, through the k-NN graph, the
+    * samples within the noise band of its members' least-squares plane that no plane holds, or that
+    * a noisier plane turned from it holds farther relative to that plane's band, and is kept if that
+    * brings it to ε: a small face beside a noisier one, whose growth stopped short of its rim and
+    * whose edge strip the neighbour's wider band held. See pcl::rspd::completeSmallPlanes and
+    * pcl::rspd::DetectorParameters::small_plane_completion. */
+  void
+  setSmallPlaneCompletion (bool enable);
+  /** \brief Whether small-plane pass planes short of ε are completed before the ε rule. */
+  bool
+  getSmallPlaneCompletion () const { return params_.small_plane_completion; }
 
   /** \brief Volume layers (default on; false = such planes are kept): a plane a noisy seed seeded
     * (a retested outlier seed, a group of thick cells) is dropped when the layer beside its noise

@@ -516,6 +516,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setOutlierSeedRetest (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSmallPlaneCompletion (bool enable)
+{
+  params_.small_plane_completion = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setVolumeLayerCheck (bool enable)
 {
   params_.volume_layer_check = enable;
