@@ -4,7 +4,7 @@
  */
 #include <pcl_rspd/edge_sides.h>
 #include <pcl_rspd/normal_estimation.h> // resolveThreads
-#include <pcl_rspd/patch_growth.h>      // kNoPatch
+#include <pcl_rspd/patch_growth.h>      // kNoPatch, membersFromLabels
 
 #include <algorithm>
 #include <cmath>
@@ -52,19 +52,6 @@ bool
 distinct (const PlanarPatch& a, const PlanarPatch& b)
 {
   return std::abs (a.normal.dot (b.normal)) < std::min (a.cos_mnd, b.cos_mnd);
-}
-/** Members from the labels, ascending, and each plane's lowest member (the tie-break). */
-void
-rebuildMembers (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatch>& patches)
-{
-  for (auto& patch : patches)
-    patch.members.clear ();
-  for (std::uint32_t i = 0; i < labels.size (); ++i)
-    if (labels[i] != kNoPatch)
-      patches[labels[i]].members.push_back (i);
-  for (auto& patch : patches)
-    if (!patch.members.empty ())
-      patch.first_index = patch.members.front ();
 }
 } // namespace
 
@@ -211,7 +198,7 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
     labels[i] = next[k];
   }
   if (changed)
-    rebuildMembers (labels, patches);
+    membersFromLabels (labels, patches);
   return counts;
 }
 
@@ -293,7 +280,7 @@ settleStepSides (const PointSet& points, const NeighborGraph& graph, const std::
   if (moved > 0)
   {
     labels.swap (next);
-    rebuildMembers (labels, patches);
+    membersFromLabels (labels, patches);
   }
   return moved;
 }

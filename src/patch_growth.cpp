@@ -22,6 +22,19 @@ labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches)
   return labels;
 }
 
+void
+membersFromLabels (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatch>& patches)
+{
+  for (auto& patch : patches)
+    patch.members.clear ();
+  for (std::uint32_t i = 0; i < labels.size (); ++i)
+    if (labels[i] != kNoPatch)
+      patches[labels[i]].members.push_back (i);
+  for (auto& patch : patches)
+    if (!patch.members.empty ())
+      patch.first_index = patch.members.front ();
+}
+
 std::size_t
 growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
              std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags, const PointSet* trimmed)

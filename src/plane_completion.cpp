@@ -4,7 +4,7 @@
  */
 #include <pcl_rspd/band_layers.h>
 #include <pcl_rspd/normal_estimation.h> // resolveThreads
-#include <pcl_rspd/patch_growth.h>      // labelSamples, kNoPatch
+#include <pcl_rspd/patch_growth.h>      // labelSamples, membersFromLabels, kNoPatch
 #include <pcl_rspd/plane_completion.h>
 #include <pcl_rspd/plane_refit.h>       // refitPlanes
 #include <pcl_rspd/robust_statistics.h> // kMadScale, medianInPlace
@@ -27,7 +27,7 @@ constexpr double kCompletionBandSigmas = 3.0;
   * member to its nearest neighbour) is flat to the float rounding of its coordinates: a level of a
   * depth camera, whose samples at one quantized depth make terraces on every slanted surface, not a
   * noisy face. Measured: office1's 31 candidates, all such terraces, 2e-6 to 4e-5 of their spacing
-  * (without this floor 12 of them were completed into planes); synpeb_pc01's four faces 0.3-0.9,
+  * (without this floor 12 of them were completed, 9 planes more); synpeb_pc01's four faces 0.3-0.9,
   * room_scan1's candidates 0.2 and more. */
 constexpr double kExactFlatShare = 0.01;
 
@@ -92,9 +92,8 @@ completeSmallPlanes (const PointSet& points, const NeighborGraph& graph, const D
   std::vector<std::uint32_t> walk, taken;
   for (std::uint32_t c = 0; c < patches.size (); ++c)
   {
-    if (!isCandidate (patches[c], epsilon) || !std::isfinite (band[c]) || !(band[c] > flat_floor[c]))
+    if (!isCandidate (patches[c], epsilon) || !(band[c] > flat_floor[c]))
       continue;
-    const double cos_mnd = std::cos (std::min (patches[c].mnd, M_PI / 2.0));
     // A sample joins when it lies within c's band, and no plane holds it or a plane holds it that is
     // noisier than c, turned from it beyond its MND, and relatively farther from it.
     const auto joins = [&] (std::uint32_t s) {
@@ -104,7 +103,8 @@ completeSmallPlanes (const PointSet& points, const NeighborGraph& graph, const D
       const std::uint32_t l = labels[s];
       if (l == kNoPatch)
         return true;
-      return l != c && band[c] < band[l] && std::abs (fitted[c].normal.dot (fitted[l].normal)) < cos_mnd &&
+      // (c's own members are visited before the walk: l is another plane)
+      return band[c] < band[l] && std::abs (fitted[c].normal.dot (fitted[l].normal)) < patches[c].cos_mnd &&
              r < relative (s, l);
     };
     walk.assign (patches[c].members.begin (), patches[c].members.end ());
@@ -137,16 +137,8 @@ completeSmallPlanes (const PointSet& points, const NeighborGraph& graph, const D
     patches[c].retested = true; // completed by position: judged flat once grown, as noisy seeds' planes
     ++completed;
   }
-  if (completed == 0)
-    return 0;
-  for (auto& patch : patches)
-    patch.members.clear ();
-  for (std::uint32_t s = 0; s < labels.size (); ++s)
-    if (labels[s] != kNoPatch)
-      patches[labels[s]].members.push_back (s);
-  for (auto& patch : patches)
-    if (!patch.members.empty ())
-      patch.first_index = patch.members.front ();
+  if (completed > 0)
+    membersFromLabels (labels, patches);
   return completed;
 }
 

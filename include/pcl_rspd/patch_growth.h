@@ -24,6 +24,12 @@ constexpr std::uint32_t kNoPatch = std::numeric_limits<std::uint32_t>::max ();
 std::vector<std::uint32_t>
 labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches);
 
+/** \brief The inverse of labelSamples, for passes that move samples by their labels: each patch's
+  * members from \a labels, ascending, and its first_index the lowest of them (patches whose label
+  * no sample carries are left without members). */
+void
+membersFromLabels (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatch>& patches);
+
 /** \brief Per-sample flags that let later grow-merge iterations skip a sample's graph row.
   *
   * During grow-merge a labelled sample never loses its label and merging relabels whole patches,
