@@ -126,10 +126,10 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
         if (free[j])
           sets.join (i, j);
       });
-  std::vector<std::vector<std::uint32_t>> parts;
-  for (auto& g : sets.groups ())
-    if (g.size () >= eps && free[g.front ()])
-      parts.push_back (std::move (g));
+  const std::vector<std::vector<std::uint32_t>> parts =
+    sets.groups (eps, [&] (std::uint32_t i) { return free[i] != 0; });
+  if (parts.empty ())
+    return 0;
 
   // stamp[i]: the part (1-based) sample i is still open in, 0 for none.
   std::vector<std::uint32_t> stamp (n, 0), seen (n, 0), covered (n, 0);

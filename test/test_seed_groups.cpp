@@ -192,3 +192,24 @@ TEST (DisjointSets, GroupsDoNotDependOnTheJoinOrder)
   EXPECT_EQ (a.find (4), 1u);
   EXPECT_EQ (b.find (5), 2u);
 }
+
+TEST (DisjointSets, FilteredGroupsCountOnlyTheKeptElements)
+{
+  // {0}, {1, 3, 4, 6}, {2, 5}, {7}: with 4 left out, {1, 3, 6} keeps three elements.
+  DisjointSets s (8);
+  s.join (4, 1);
+  s.join (1, 3);
+  s.join (5, 2);
+  s.join (6, 4);
+  const auto all = [] (std::uint32_t) { return true; };
+  const auto not4 = [] (std::uint32_t i) { return i != 4; };
+  using Groups = std::vector<std::vector<std::uint32_t>>;
+  EXPECT_EQ (s.groups (1, all), s.groups ());
+  EXPECT_EQ (s.groups (2, all), (Groups {{1, 3, 4, 6}, {2, 5}}));
+  EXPECT_EQ (s.groups (3, not4), (Groups {{1, 3, 6}}));
+  EXPECT_EQ (s.groups (4, not4), Groups ());
+  // A set whose kept elements exclude its root still comes in order of its root.
+  const auto odd = [] (std::uint32_t i) { return i % 2 == 1; };
+  EXPECT_EQ (s.groups (1, odd), (Groups {{1, 3}, {5}, {7}}));
+  EXPECT_EQ (s.groups (0, [] (std::uint32_t) { return false; }), Groups ());
+}

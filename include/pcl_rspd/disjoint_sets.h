@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <numeric>
 #include <vector>
@@ -43,13 +44,44 @@ public:
   std::vector<std::vector<std::uint32_t>>
   groups ()
   {
-    std::vector<std::vector<std::uint32_t>> by_root (parent_.size ());
-    for (std::uint32_t a = 0; a < parent_.size (); ++a)
-      by_root[find (a)].push_back (a);
+    return groups (1, [] (std::uint32_t) { return true; });
+  }
+
+  /** \brief The sets of at least \a min_size elements that \a keep (a predicate on an element)
+    * admits, counted over those elements alone; each ascending, in order of their smallest element.
+    * A cloud's samples are mostly sets of one that the caller does not want: counting first
+    * allocates only the sets returned (at 10M samples a vector per sample cost ~0.7 GB). */
+  template <typename Keep> std::vector<std::vector<std::uint32_t>>
+  groups (std::size_t min_size, Keep keep)
+  {
+    const auto n = static_cast<std::uint32_t> (parent_.size ());
+    // Per root, its kept elements' count, then the index of its group among those returned.
+    constexpr std::uint32_t kNone = ~0u;
+    std::vector<std::uint32_t> slot (n, 0);
+    for (std::uint32_t a = 0; a < n; ++a)
+      if (keep (a))
+        ++slot[find (a)];
     std::vector<std::vector<std::uint32_t>> out;
-    for (auto& g : by_root)
-      if (!g.empty ())
-        out.push_back (std::move (g));
+    for (std::uint32_t a = 0; a < n; ++a)
+    {
+      if (parent_[a] != a)
+        continue; // a root is its own parent
+      if (slot[a] >= std::max<std::size_t> (min_size, 1))
+      {
+        out.emplace_back ();
+        out.back ().reserve (slot[a]);
+        slot[a] = static_cast<std::uint32_t> (out.size () - 1);
+      }
+      else
+        slot[a] = kNone;
+    }
+    for (std::uint32_t a = 0; a < n; ++a)
+      if (keep (a))
+      {
+        const std::uint32_t g = slot[find (a)];
+        if (g != kNone)
+          out[g].push_back (a);
+      }
     return out;
   }
 
