@@ -34,8 +34,8 @@
 namespace
 {
 const char* const kUsage =
-  "usage: rspd_make_scene NAME OUT_PREFIX [-n N] [--noise S] [--outliers R] [--rotate]"
-  " [--scale F] [--offset X Y Z] [--seed S] [--layout L] [--no-shuffle] | rspd_make_scene --list\n"
+  "usage: rspd_make_scene NAME OUT_PREFIX [-n N] [--noise S] [--isotropic] [--outliers R]"
+  " [--rotate] [--scale F] [--offset X Y Z] [--seed S] [--layout L] [--no-shuffle] | rspd_make_scene --list\n"
   "       rspd_make_scene CLOUD.pcd|CLOUD.ply OUT_PREFIX [--rotate] [--scale F] [--offset X Y Z] [--seed S]";
 
 /** \brief Whether a scene name is a cloud file to move rather than a scene to generate. */
@@ -150,6 +150,8 @@ main (int argc, char** argv)
         if (options.noise < 0.0)
           throw UsageError ("--noise must be >= 0");
       }
+      else if (arg == "--isotropic")
+        options.isotropic_noise = true;
       else if (arg == "--outliers")
       {
         value (1);
@@ -204,10 +206,10 @@ main (int argc, char** argv)
   const std::string& prefix = positional[1];
   if (isCloudFile (name))
   {
-    if (options.num_points != 0 || options.noise >= 0.0 || options.outlier_ratio >= 0.0 || !options.shuffle ||
-        options.layout != 0)
+    if (options.num_points != 0 || options.noise >= 0.0 || options.isotropic_noise || options.outlier_ratio >= 0.0 ||
+        !options.shuffle || options.layout != 0)
     {
-      std::fprintf (stderr, "rspd_make_scene: -n, --noise, --outliers, --layout and --no-shuffle apply to generated "
+      std::fprintf (stderr, "rspd_make_scene: -n, --noise, --isotropic, --outliers, --layout and --no-shuffle apply to generated "
                     "scenes, not to '%s'\n%s\n", name.c_str (), kUsage);
       return 2;
     }

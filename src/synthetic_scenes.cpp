@@ -330,10 +330,20 @@ apportion (std::size_t total, const std::vector<double>& weights)
   return counts;
 }
 
+/** \brief Gaussian noise of \a sigma per axis. */
+Eigen::Vector3d
+isotropicNoise (double sigma, SceneRandom& rng)
+{
+  Eigen::Vector3d e;
+  for (int a = 0; a < 3; ++a)
+    e[a] = sigma * rng.normal ();
+  return e;
+}
+
 /** \brief Draw \a count samples from \a surfaces proportionally to area, in surface order, with
-  * Gaussian noise of \a sigma along each sample's normal. */
+  * Gaussian noise of \a sigma along each sample's normal (per axis if \a isotropic). */
 void
-sampleSurfaces (const std::vector<Surface>& surfaces, std::size_t count, double sigma,
+sampleSurfaces (const std::vector<Surface>& surfaces, std::size_t count, double sigma, bool isotropic,
                 SceneRandom& rng, std::vector<Sample>& out)
 {
   std::vector<double> areas;
@@ -346,7 +356,7 @@ sampleSurfaces (const std::vector<Surface>& surfaces, std::size_t count, double 
     {
       surfaces[i].draw (rng, p, n);
       if (sigma > 0.0)
-        p += sigma * rng.normal () * n;
+        p += isotropic ? isotropicNoise (sigma, rng) : Eigen::Vector3d (sigma * rng.normal () * n);
       out.push_back ({p, surfaces[i].label, surfaces[i].kind});
     }
 }
@@ -398,6 +408,7 @@ struct Params
   std::size_t num_points;
   std::size_t num_outliers;
   double noise;
+  bool isotropic;        ///< SceneOptions::isotropic_noise
   std::uint32_t layout;  ///< SceneOptions::layout
 };
 
@@ -425,7 +436,7 @@ buildCube (const Params& prm, SceneRandom& rng)
         axisRect (axis, side * half[axis], -half[a0], half[a0], -half[a1], half[a1]), ++label));
   }
   g.num_candidates = label;
-  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, prm.isotropic, rng, g.samples);
   return g;
 }
 
@@ -451,7 +462,7 @@ buildStaircase (const Params& prm, SceneRandom& rng)
       planeSurface (axisRect (2, z0 + rise, x0, x0 + depth, 0.0, width), ++label));
   }
   g.num_candidates = label;
-  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, prm.isotropic, rng, g.samples);
   return g;
 }
 
@@ -498,7 +509,8 @@ buildBoxes (const Params& prm, SceneRandom& rng)
   }
   const std::vector<std::size_t> counts = apportion (prm.num_points - prm.num_outliers, areas);
   for (std::size_t k = 0; k < groups.size (); ++k)
-    sampleSurfaces (groups[k], counts[k], k == 0 ? prm.noise : roughness[k - 1] * prm.noise, rng, g.samples);
+    sampleSurfaces (groups[k], counts[k], k == 0 ? prm.noise : roughness[k - 1] * prm.noise, prm.isotropic,
+                    rng, g.samples);
   return g;
 }
 
@@ -549,7 +561,7 @@ buildFacade (const Params& prm, SceneRandom& rng)
                                     static_cast<double> (openings.size ()) * win_w * win_h));
   surfaces.insert (surfaces.end (), windows.begin (), windows.end ());
   g.num_candidates = label;
-  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, prm.isotropic, rng, g.samples);
   return g;
 }
 
@@ -634,7 +646,7 @@ buildIndustrial (const Params& prm, SceneRandom& rng)
   }
   for (const auto& p : pipes)
     surfaces.push_back (cylinderSurface (p.base, p.axis, p.length, p.radius));
-  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, prm.isotropic, rng, g.samples);
   return g;
 }
 
@@ -646,7 +658,7 @@ buildPlane (const Params& prm, SceneRandom& rng)
   g.extent = {Eigen::Vector3d (-0.5, -0.5, 0.0), Eigen::Vector3d (0.5, 0.5, 0.0)};
   std::vector<Surface> surfaces {planeSurface (axisRect (2, 0.0, -0.5, 0.5, -0.5, 0.5), 1)};
   g.num_candidates = 1;
-  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, rng, g.samples);
+  sampleSurfaces (surfaces, prm.num_points - prm.num_outliers, prm.noise, prm.isotropic, rng, g.samples);
   return g;
 }
 
@@ -815,8 +827,9 @@ buildRoom (const Params& prm, SceneRandom& rng)
     }
     if (hit == nullptr)  // the room is closed, so this only guards against rounding at corners
       continue;
-    const double range = best + (prm.noise > 0.0 ? prm.noise * rng.normal () : 0.0);
-    g.samples.push_back ({sensor + range * d, hit->label,
+    const double range = best + (prm.noise > 0.0 && !prm.isotropic ? prm.noise * rng.normal () : 0.0);
+    const Eigen::Vector3d e = prm.noise > 0.0 && prm.isotropic ? isotropicNoise (prm.noise, rng) : Eigen::Vector3d::Zero ();
+    g.samples.push_back ({sensor + range * d + e, hit->label,
                           hit->label > 0 ? SurfaceKind::Plane : SurfaceKind::Curved});
   }
   // A plane seen by only a handful of rays is not a fair detection target: count a plane only
@@ -893,6 +906,7 @@ makeScene (const std::string& name, const SceneOptions& options)
   Params prm;
   prm.num_points = options.num_points > 0 ? options.num_points : spec->default_points;
   prm.noise = options.noise >= 0.0 ? options.noise : spec->default_noise;
+  prm.isotropic = options.isotropic_noise;
   prm.layout = options.layout;
   const double ratio = options.outlier_ratio >= 0.0 ? options.outlier_ratio
                                                     : spec->default_outliers;

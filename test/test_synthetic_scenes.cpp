@@ -294,6 +294,38 @@ TEST (SyntheticScenes, CubeSamplesLieOnTheirFace)
   EXPECT_NEAR (std::sqrt (sq / scene.cloud.size ()), o.noise, 0.05 * o.noise);
 }
 
+TEST (SyntheticScenes, IsotropicNoiseIsDrawnInEveryDirection)
+{
+  // The plane scene (z = 0 over [-0.5, 0.5]^2) with σ = 1 cm per axis: off the plane as much as
+  // along the normal, and along it too, so that samples lie beyond the square's edges; the ray-cast
+  // room's samples leave their rays. The default draws along the normal only (see above).
+  SceneOptions o;
+  o.noise = 0.01;
+  o.isotropic_noise = true;
+  const Scene plane = makeScene ("plane", o);
+  double sq_z = 0.0;
+  std::size_t beyond = 0;
+  for (const auto& p : plane.cloud)
+  {
+    sq_z += static_cast<double> (p.z) * p.z;
+    beyond += std::abs (p.x) > 0.5f || std::abs (p.y) > 0.5f;
+  }
+  const double n = static_cast<double> (plane.cloud.size ());
+  EXPECT_NEAR (std::sqrt (sq_z / n), o.noise, 0.05 * o.noise);
+  // A band of 1 cm along 4 m of edge holds ~4 % of the samples, half of them pushed outwards.
+  EXPECT_GT (beyond, static_cast<std::size_t> (0.01 * n));
+  EXPECT_LT (beyond, static_cast<std::size_t> (0.03 * n));
+  // The default and the isotropic room differ, and both keep their size and truth.
+  SceneOptions r;
+  r.num_points = 20000;
+  const Scene along = makeScene ("room", r);
+  r.isotropic_noise = true;
+  const Scene around = makeScene ("room", r);
+  ASSERT_EQ (along.cloud.size (), around.cloud.size ());
+  EXPECT_EQ (along.num_planes, around.num_planes);
+  EXPECT_NE (along.cloud[0].getVector3fMap (), around.cloud[0].getVector3fMap ());
+}
+
 TEST (SyntheticScenes, NoiseFreePlaneIsExact)
 {
   const Scene scene = makeScene ("plane");

@@ -34,6 +34,9 @@ struct SceneOptions
   /** Gaussian noise sigma in scene units before scaling, along the surface normal (along the
     * ray for the scanned room); < 0: the scene's default. */
   double noise = -1.0;
+  /** Draw the noise in every direction instead (sigma per axis), as a sensor whose error is not
+    * along the normal puts samples beyond a face's edge. */
+  bool isotropic_noise = false;
   /** Share of num_points that are outliers, uniform in the scene's box grown by 5 % of its
     * diagonal on each side; in [0, 1], < 0: the scene's default (0.15 facade, 0 otherwise). */
   double outlier_ratio = -1.0;
