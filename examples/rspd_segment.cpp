@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -96,6 +96,9 @@ const char* const kHelp =
     "  --edge-corners on|off  with --edge-sides on, a point inside the corner two planes make\n"
     "                   goes to the nearer of them, relative to its noise (default on; off = as\n"
     "                   before: the plane that reached it first keeps it)\n"
+    "  --edge-wedges on|off  with --edge-sides on, a point outside the edge of two planes\n"
+    "                   (beyond each) goes to the one it lies farther from, relative to their\n"
+    "                   noise, within both bands (default on; off = as before: to none)\n"
     "  --thick-join on|off  the split also joins touching cells that fail only the paper's\n"
     "                   distance test (T1) and agree on their plane; once growth is stable, what\n"
     "                   it left of a group seeds a plane if it passes the tests (default on;\n"
@@ -235,6 +238,7 @@ struct Options
   bool released_planes = true;
   bool edge_sides = true;
   bool edge_corners = true;
+  bool edge_wedges = true;
   bool step_sides = true;
   bool thick_join = true;
   bool small_thick_join = true;
@@ -372,6 +376,8 @@ parseArguments (int argc, char** argv)
       o.edge_sides = option.choice ("on", "off");
     else if (arg == "--edge-corners")
       o.edge_corners = option.choice ("on", "off");
+    else if (arg == "--edge-wedges")
+      o.edge_wedges = option.choice ("on", "off");
     else if (arg == "--thick-join")
       o.thick_join = option.choice ("on", "off");
     else if (arg == "--small-thick-join")
@@ -616,6 +622,7 @@ run (const Options& o)
   seg.setReleasedPlaneSeeding (o.released_planes);
   seg.setEdgeSides (o.edge_sides);
   seg.setEdgeCorners (o.edge_corners);
+  seg.setEdgeWedges (o.edge_wedges);
   seg.setStepSides (o.step_sides);
   seg.setThickCellJoin (o.thick_join);
   seg.setSmallPassThickCellJoin (o.small_thick_join);
@@ -670,10 +677,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu noisy seeds' planes dropped as where a volume of points ends, %zu kept by the small-plane "
        "pass (%zu brought to eps by completion, %zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved (%zu inside corners) and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.volume_layers, stats.small_seeds, stats.small_completed, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_released, stats.step_moved, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_moved, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)

@@ -57,7 +57,7 @@ distinct (const PlanarPatch& a, const PlanarPatch& b)
 
 EdgeSideCounts
 settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
-                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, bool corners)
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, bool corners, bool wedges)
 {
   EdgeSideCounts counts;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (labels.size ());
@@ -128,7 +128,7 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
   };
 
   std::vector<std::uint32_t> next (border.size ());
-  std::vector<char> in_corner (border.size (), 0);
+  std::vector<char> in_corner (border.size (), 0), outside (border.size (), 0);
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
   for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (border.size ()); ++k)
   {
@@ -157,6 +157,34 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
         best = b;
       }
     });
+    if (beyond && best == kNoPatch && wedges)
+    {
+      // Outside the edge (beyond the line on a and on b): only noise across the line puts samples
+      // here, and with the same noise in every direction the plane the sample lies farther from is
+      // the likelier one (see the header); beyond any of the bands, none takes it.
+      double far_r = relativeDistance (p, patches, band, a);
+      std::uint32_t far = a;
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        const std::uint32_t b = labels[j];
+        if (b == kNoPatch || b == a)
+          return;
+        const int sa = sideOf (a, b), sb = sideOf (b, a);
+        if (sa == kStraddles || sa == kUnjudged || sb == kStraddles || sb == kUnjudged ||
+            sa * across (p, patches[a], patches[b]) >= 0.0 || sb * across (p, patches[b], patches[a]) >= 0.0)
+          return;
+        const double r = relativeDistance (p, patches, band, b);
+        if (r > far_r || (r == far_r && b < far))
+        {
+          far_r = r;
+          far = b;
+        }
+      });
+      if (far_r <= 1.0)
+      {
+        best = far;
+        outside[k] = 1;
+      }
+    }
     if (beyond)
     {
       next[k] = best;
@@ -191,6 +219,7 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
   for (std::size_t k = 0; k < border.size (); ++k)
   {
     const std::uint32_t i = border[k];
+    counts.outside += outside[k];
     if (next[k] == labels[i])
       continue;
     changed = true;

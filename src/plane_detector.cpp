@@ -1133,9 +1133,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   {
     labels = labelSamples (points.size (), patches);
     const EdgeSideCounts c = settleEdgeSides (points, graph, noiseBands (points, params, patches),
-                                              params.num_threads, patches, labels, params.edge_corners);
+                                              params.num_threads, patches, labels, params.edge_corners,
+                                              params.edge_wedges);
     st.edge_moved = c.moved;
     st.edge_cornered = c.cornered;
+    st.edge_outside = c.outside;
     st.edge_released = c.released;
     patches.erase (std::remove_if (patches.begin (), patches.end (),
                                    [] (const PlanarPatch& p) { return p.members.empty (); }),

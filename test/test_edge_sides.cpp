@@ -144,6 +144,49 @@ TEST (EdgeSides, SamplesInsideTheCornerGoToTheNearerPlane)
       EXPECT_EQ (on[m], l);
 }
 
+TEST (EdgeSides, SamplesOutsideTheEdgeGoToThePlaneTheyLieFartherFrom)
+{
+  // Outside the nose (x < 0, z > 0) noise along the normals puts no sample; noise across the edge
+  // does. Samples there, labelled by the nearer plane as growth may have: with wedges on, each goes
+  // to the plane it lies farther from (bands equal) if it is within both bands, else to none; with
+  // wedges off, all go to none.
+  Nose nose = makeNose (21);
+  PointSet& s = nose.set;
+  const std::size_t first = s.size ();
+  // (x, z): depth beyond the riser's plane and above the tread's.
+  const std::vector<std::pair<float, float>> outside{{-0.002f, 0.006f}, {-0.008f, 0.003f}, {-0.005f, 0.0045f},
+                                                     {-0.001f, 0.011f}, {-0.003f, 0.02f},  {-0.015f, 0.002f}};
+  for (std::size_t t = 0; t < outside.size (); ++t)
+  {
+    s.points.emplace_back (outside[t].first, 0.02f + 0.03f * static_cast<float> (t), outside[t].second);
+    s.normals.emplace_back (0.f, 0.f, 1.f);
+    s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+  }
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
+  const std::vector<std::uint32_t> start = nearestLabels (s, nose.planes);
+  std::vector<std::uint32_t> on = start, off = start;
+  std::vector<PlanarPatch> p_on = patchesOf (on, nose.planes), p_off = patchesOf (off, nose.planes);
+  const EdgeSideCounts c_on = settleEdgeSides (s, g, {0.012, 0.012}, 1, p_on, on, true, true);
+  const EdgeSideCounts c_off = settleEdgeSides (s, g, {0.012, 0.012}, 1, p_off, off, true, false);
+  // Farther from the tread (z > -x): the tread; farther from the riser: the riser; beyond a band
+  // (1.2 cm): none.
+  const std::vector<std::uint32_t> expected{0, 1, 1, 0, kNoPatch, kNoPatch};
+  for (std::size_t t = 0; t < outside.size (); ++t)
+  {
+    EXPECT_EQ (on[first + t], expected[t]) << t;
+    EXPECT_EQ (off[first + t], kNoPatch) << t;
+  }
+  EXPECT_EQ (c_on.outside, 4u);
+  EXPECT_EQ (c_off.outside, 0u);
+  EXPECT_EQ (c_off.released, c_on.released + 4u);
+  // Elsewhere the two agree.
+  for (std::size_t i = 0; i < first; ++i)
+    EXPECT_EQ (on[i], off[i]) << i;
+  for (std::uint32_t l = 0; l < 2; ++l)
+    for (const auto m : p_on[l].members)
+      EXPECT_EQ (on[m], l);
+}
+
 TEST (EdgeSides, PlaneThatStraddlesTheOtherKeepsItsSamples)
 {
   // A wall x = 0 over z in [-0.25, 0.25] and a shelf z = 0 out of it over x in [0, 0.5]. The wall

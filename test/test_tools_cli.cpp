@@ -313,6 +313,8 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_volume_on.pcd", {"--volume-layers", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_completion_on.pcd", {"--small-completion", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_corners_off.pcd", {"--edge-corners=off"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_wedges_on.pcd", {"--edge-wedges", "on"}));
+  EXPECT_FALSE (room == labels ("r.pcd", "room_wedges_off.pcd", {"--edge-wedges=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_steps_on.pcd", {"--step-sides", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_thick_on.pcd", {"--thick-join", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_small_thick_on.pcd", {"--small-thick-join", "on"}));

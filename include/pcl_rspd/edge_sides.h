@@ -22,6 +22,7 @@ struct EdgeSideCounts
   std::size_t moved = 0;    ///< samples given to the other plane
   std::size_t released = 0; ///< samples that left their plane for none
   std::size_t cornered = 0; ///< samples inside the corner of two planes given to the nearer one
+  std::size_t outside = 0;  ///< samples outside the edge of two planes kept by the farther one
 };
 
 /** \brief Edge sides (departure, DetectorParameters::edge_sides): a sample next to another plane
@@ -47,6 +48,14 @@ struct EdgeSideCounts
   * sample as far off a as it moves b's sample off b, so the nearer plane is the likelier one (the
   * beyond rule settles only the half of such samples that the noise pushed out of the corner).
   * Pairs where either plane straddles the other, or has no vote, are left alone here too.
+  *
+  * With \a wedges, a sample of a whose projection onto a lies beyond b and whose projection onto b
+  * lies beyond a (outside the edge, where noise across the line, not along a normal, put it: a
+  * range sensor's noise along its rays, seen obliquely) goes to the plane it lies farther from,
+  * relative to that plane's band, if it is within both bands, instead of to none. For noise of one σ
+  * in every direction, a's sample at depth u off a and v beyond b's plane is likelier than b's
+  * exactly when u > v, since φ(u) Q(v) > φ(v) Q(u) there (φ / Q, the normal's hazard, grows). Where
+  * noise is along the normals only, no plane's sample lies there and clutter is what the rule takes.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] band per patch, the distance within which its own samples lie (the noise band)
@@ -55,10 +64,13 @@ struct EdgeSideCounts
   * \param[in,out] labels per-sample patch label, updated
   * \param[in] corners whether samples inside a corner go to the nearer plane
   *            (DetectorParameters::edge_corners)
+  * \param[in] wedges whether samples outside an edge go to the farther plane rather than to none
+  *            (DetectorParameters::edge_wedges)
   */
 EdgeSideCounts
 settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
-                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, bool corners = true);
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, bool corners = true,
+                 bool wedges = true);
 
 /** \brief Step sides (departure, DetectorParameters::step_sides): a sample next to a parallel plane
   * (normals within either plane's MND) offset from its own by more than the wider noise band goes to

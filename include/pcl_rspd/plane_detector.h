@@ -368,6 +368,13 @@ struct DetectorParameters
     * corner, and growth gave the rest to whichever plane reached them first.
     * false = edge sides as before (issue #6's thirty-eighth session). */
   bool edge_corners = true;
+  /** \brief Departure (edge wedges, see settleEdgeSides): with edge_sides, a sample outside the edge
+    * of two planes (its projection onto each beyond the other) goes to the plane it lies farther
+    * from relative to its noise band, within both bands, instead of to none. Noise along a normal
+    * puts no sample there; noise across the edge does (a range sensor's along its rays, at an
+    * oblique face), and for noise alike in every direction the farther plane is the likelier.
+    * false = edge sides as before (issue #6's forty-second session). */
+  bool edge_wedges = true;
   /** \brief Departure (thick-cell join, see splitPhase): the split also keeps the largest cells that
     * fail T1 alone (too thick for their extent, planar by T2 and T3) and joins those whose cubes touch
     * and whose planes agree; once growth is stable, what it left of each group of two or more seeds
@@ -634,6 +641,7 @@ struct DetectorStatistics
   std::size_t noisy_bent_planes = 0; ///< noisy seeds' planes split at an edge before they are judged flat (noisy_bent_split)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_cornered = 0;     ///< samples inside a corner given to the nearer plane (edge_corners)
+  std::size_t edge_outside = 0;      ///< samples outside an edge kept by the farther plane (edge_wedges)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane

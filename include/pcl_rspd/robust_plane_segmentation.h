@@ -629,6 +629,16 @@ public:
   bool
   getEdgeCorners () const { return params_.edge_corners; }
 
+  /** \brief Edge wedges (default true; false = edge sides as before): with edge sides on, a sample
+    * outside the edge of two planes (beyond each) goes to the plane it lies farther from, within
+    * both noise bands, instead of to none. See pcl::rspd::settleEdgeSides and
+    * pcl::rspd::DetectorParameters::edge_wedges. */
+  void
+  setEdgeWedges (bool enable);
+  /** \brief Whether samples outside an edge go to the farther plane. */
+  bool
+  getEdgeWedges () const { return params_.edge_wedges; }
+
   /** \brief Thick-cell join (default true; false = the paper): the split also keeps the largest
     * cells that fail T1 alone (too thick for their extent, planar by T2 and T3), joins touching ones
     * whose planes agree, and seeds a patch from each group that passes T1-T3 as a whole. See

@@ -446,6 +446,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setEdgeCorners (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setEdgeWedges (bool enable)
+{
+  params_.edge_wedges = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setThickCellJoin (bool enable)
 {
   params_.join_thick_cells = enable;
