@@ -164,14 +164,20 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
       // the likelier one (see the header); beyond any of the bands, none takes it.
       double far_r = relativeDistance (p, patches, band, a);
       std::uint32_t far = a;
+      bool outside_edge = false; // some b's projection lies beyond a too (not merely beyond b's band)
+      double excursion = 0.0;    // how far p's projection onto a lies beyond a's edge lines, in a
       graph.forEachNeighbor (i, [&] (std::uint32_t j) {
         const std::uint32_t b = labels[j];
         if (b == kNoPatch || b == a)
           return;
         const int sa = sideOf (a, b), sb = sideOf (b, a);
-        if (sa == kStraddles || sa == kUnjudged || sb == kStraddles || sb == kUnjudged ||
-            sa * across (p, patches[a], patches[b]) >= 0.0 || sb * across (p, patches[b], patches[a]) >= 0.0)
+        if (sa == kStraddles || sa == kUnjudged || sa * across (p, patches[a], patches[b]) >= 0.0)
           return;
+        const double c = patches[a].normal.dot (patches[b].normal);
+        excursion = std::max (excursion, std::abs (across (p, patches[a], patches[b])) / std::sqrt (std::max (1e-12, 1.0 - c * c)));
+        if (sb == kStraddles || sb == kUnjudged || sb * across (p, patches[b], patches[a]) >= 0.0)
+          return;
+        outside_edge = true;
         const double r = relativeDistance (p, patches, band, b);
         if (r > far_r || (r == far_r && b < far))
         {
@@ -179,7 +185,9 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
           far = b;
         }
       });
-      if (far_r <= 1.0)
+      // Beyond b's line and b's band but on b's side of a (b cannot own it): a's own noise across its
+      // edge can, as far as a's band reaches.
+      if (outside_edge ? far_r <= 1.0 : far_r <= 1.0 && excursion <= band[a])
       {
         best = far;
         outside[k] = 1;

@@ -187,6 +187,35 @@ TEST (EdgeSides, SamplesOutsideTheEdgeGoToThePlaneTheyLieFartherFrom)
       EXPECT_EQ (on[m], l);
 }
 
+TEST (EdgeSides, SamplesBeyondTheLineStayWithTheirPlaneWithinItsOwnBand)
+{
+  // The riser noisier than the tread (bands 3 cm and 1.2 cm): a riser sample above the nose (z > 0)
+  // and beyond the tread's band lies where the tread's noise does not reach; the riser's noise
+  // across its edge does, up to the riser's band. With wedges on it stays with the riser there and
+  // goes to none beyond; with wedges off both go to none.
+  Nose nose = makeNose (31);
+  PointSet& s = nose.set;
+  const std::size_t first = s.size ();
+  for (const float z : {0.02f, 0.04f})
+  {
+    s.points.emplace_back (0.003f, 0.1f + 2.0f * z, z);
+    s.normals.emplace_back (1.f, 0.f, 0.f);
+    s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+  }
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
+  const std::vector<std::uint32_t> start = nearestLabels (s, nose.planes);
+  ASSERT_EQ (start[first], 1u);
+  ASSERT_EQ (start[first + 1], 1u);
+  std::vector<std::uint32_t> on = start, off = start;
+  std::vector<PlanarPatch> p_on = patchesOf (on, nose.planes), p_off = patchesOf (off, nose.planes);
+  settleEdgeSides (s, g, {0.012, 0.03}, 1, p_on, on, true, true);
+  settleEdgeSides (s, g, {0.012, 0.03}, 1, p_off, off, true, false);
+  EXPECT_EQ (on[first], 1u);
+  EXPECT_EQ (on[first + 1], kNoPatch);
+  EXPECT_EQ (off[first], kNoPatch);
+  EXPECT_EQ (off[first + 1], kNoPatch);
+}
+
 TEST (EdgeSides, PlaneThatStraddlesTheOtherKeepsItsSamples)
 {
   // A wall x = 0 over z in [-0.25, 0.25] and a shelf z = 0 out of it over x in [0, 0.5]. The wall

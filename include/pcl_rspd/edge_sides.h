@@ -56,6 +56,9 @@ struct EdgeSideCounts
   * in every direction, a's sample at depth u off a and v beyond b's plane is likelier than b's
   * exactly when u > v, since φ(u) Q(v) > φ(v) Q(u) there (φ / Q, the normal's hazard, grows). Where
   * noise is along the normals only, no plane's sample lies there and clutter is what the rule takes.
+  * Likewise a sample of a beyond b's line and b's band, on b's side of a (b cannot own it), stays with
+  * a if it lies within a's band and its projection onto a lies within a's band of the line: a's own
+  * noise across its edge, where a is the noisier plane.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] band per patch, the distance within which its own samples lie (the noise band)
