@@ -171,10 +171,12 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
         if (b == kNoPatch || b == a)
           return;
         const int sa = sideOf (a, b), sb = sideOf (b, a);
-        if (sa == kStraddles || sa == kUnjudged || sa * across (p, patches[a], patches[b]) >= 0.0)
+        const double s = across (p, patches[a], patches[b]);
+        if (sa == kStraddles || sa == kUnjudged || sa * s >= 0.0)
           return;
+        // across () is the in-plane distance times the sine of the planes' angle.
         const double c = patches[a].normal.dot (patches[b].normal);
-        excursion = std::max (excursion, std::abs (across (p, patches[a], patches[b])) / std::sqrt (std::max (1e-12, 1.0 - c * c)));
+        excursion = std::max (excursion, std::abs (s) / std::sqrt (std::max (1e-12, 1.0 - c * c)));
         if (sb == kStraddles || sb == kUnjudged || sb * across (p, patches[b], patches[a]) >= 0.0)
           return;
         outside_edge = true;

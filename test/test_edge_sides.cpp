@@ -36,6 +36,15 @@ nearestLabels (const PointSet& s, const std::vector<PlanarPatch>& patches)
   return labels;
 }
 
+/** Append one sample at \a p with normal \a n. */
+void
+addSample (PointSet& s, const Eigen::Vector3f& p, const Eigen::Vector3f& n)
+{
+  s.points.push_back (p);
+  s.normals.push_back (n);
+  s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+}
+
 std::vector<PlanarPatch>
 patchesOf (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatch> planes)
 {
@@ -157,11 +166,7 @@ TEST (EdgeSides, SamplesOutsideTheEdgeGoToThePlaneTheyLieFartherFrom)
   const std::vector<std::pair<float, float>> outside{{-0.002f, 0.006f}, {-0.008f, 0.003f}, {-0.005f, 0.0045f},
                                                      {-0.001f, 0.011f}, {-0.003f, 0.02f},  {-0.015f, 0.002f}};
   for (std::size_t t = 0; t < outside.size (); ++t)
-  {
-    s.points.emplace_back (outside[t].first, 0.02f + 0.03f * static_cast<float> (t), outside[t].second);
-    s.normals.emplace_back (0.f, 0.f, 1.f);
-    s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
-  }
+    addSample (s, {outside[t].first, 0.02f + 0.03f * static_cast<float> (t), outside[t].second}, {0.f, 0.f, 1.f});
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
   const std::vector<std::uint32_t> start = nearestLabels (s, nose.planes);
   std::vector<std::uint32_t> on = start, off = start;
@@ -197,11 +202,7 @@ TEST (EdgeSides, SamplesBeyondTheLineStayWithTheirPlaneWithinItsOwnBand)
   PointSet& s = nose.set;
   const std::size_t first = s.size ();
   for (const float z : {0.02f, 0.04f})
-  {
-    s.points.emplace_back (0.003f, 0.1f + 2.0f * z, z);
-    s.normals.emplace_back (1.f, 0.f, 0.f);
-    s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
-  }
+    addSample (s, {0.003f, 0.1f + 2.0f * z, z}, {1.f, 0.f, 0.f});
   const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 12);
   const std::vector<std::uint32_t> start = nearestLabels (s, nose.planes);
   ASSERT_EQ (start[first], 1u);

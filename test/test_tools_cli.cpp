@@ -61,6 +61,18 @@ TEST (MakeSceneCli, LayoutDrawsAnotherStaircase)
   EXPECT_NE (rspd_test::fileText (dir.file ("a.pcd")), rspd_test::fileText (dir.file ("b.pcd")));
 }
 
+TEST (MakeSceneCli, IsotropicDrawsOtherNoiseOnTheSameScene)
+{
+  REQUIRE_TOOL (tool, "rspd_make_scene");
+  rspd_test::TempDir dir;
+  const auto along = runTool (tool, {"cube", dir.file ("a"), "-n", "3000"});
+  const auto around = runTool (tool, {"cube", dir.file ("b"), "-n", "3000", "--isotropic"});
+  ASSERT_EQ (along.status, 0) << along.err;
+  ASSERT_EQ (around.status, 0) << around.err;
+  EXPECT_NE (around.out.find ("6 planes"), std::string::npos) << around.out;
+  EXPECT_NE (rspd_test::fileText (dir.file ("a.pcd")), rspd_test::fileText (dir.file ("b.pcd")));
+}
+
 TEST (MakeSceneCli, ListsScenesAndRefusesBadUsage)
 {
   REQUIRE_TOOL (tool, "rspd_make_scene");
@@ -101,6 +113,7 @@ TEST (MakeSceneCli, MovesAGivenCloudKeepingItsShapeAndOrder)
   EXPECT_TRUE (moved);
   EXPECT_EQ (runTool (tool, {dir.file ("r.pcd"), dir.file ("n"), "-n", "100"}).status, 2);
   EXPECT_EQ (runTool (tool, {dir.file ("r.pcd"), dir.file ("n"), "--layout", "2"}).status, 2);
+  EXPECT_EQ (runTool (tool, {dir.file ("r.pcd"), dir.file ("n"), "--isotropic"}).status, 2);
   const auto missing = runTool (tool, {dir.file ("none.pcd"), dir.file ("n"), "--rotate"});
   EXPECT_EQ (missing.status, 1);
   EXPECT_EQ (rspd_test::lineCount (missing.err), 1) << missing.err;
