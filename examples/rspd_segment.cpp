@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -85,6 +85,10 @@ const char* const kHelp =
     "  --tail-odds on|off  the last assignment takes a plane's noise tail (3-4 robust sigma) only as\n"
     "                   far as its noise is likelier than the clutter measured beside it (default\n"
     "                   on; off = every plane's 4 sigma tail)\n"
+    "  --member-gaps on|off  the last assignment gives a point to a plane only where it lies among\n"
+    "                   the plane's members (its gap to the nearest within 6 times theirs), not\n"
+    "                   through the clutter beside a rim (default on; off = by distance, normal\n"
+    "                   and neighbours alone)\n"
     "  --release on|off once growth is stable, members farther than 3 robust sigma from their\n"
     "                   plane are offered to the neighbouring planes (default on; off = the paper:\n"
     "                   members are never revoked)\n"
@@ -233,6 +237,7 @@ struct Options
   bool left_retest = true;
   bool position_planes = true;
   bool tail_odds = true;
+  bool member_gaps = true;
   bool hinge_normals = true;
   bool release = true;
   bool released_planes = true;
@@ -368,6 +373,8 @@ parseArguments (int argc, char** argv)
       o.position_planes = option.choice ("on", "off");
     else if (arg == "--tail-odds")
       o.tail_odds = option.choice ("on", "off");
+    else if (arg == "--member-gaps")
+      o.member_gaps = option.choice ("on", "off");
     else if (arg == "--release")
       o.release = option.choice ("on", "off");
     else if (arg == "--released-planes")
@@ -617,6 +624,7 @@ run (const Options& o)
   seg.setLeftRimRetest (o.left_retest);
   seg.setPositionPlanes (o.position_planes);
   seg.setTailOdds (o.tail_odds);
+  seg.setMemberGaps (o.member_gaps);
   seg.setHingeNormalTurn (o.hinge_normals);
   seg.setFarMemberRelease (o.release);
   seg.setReleasedPlaneSeeding (o.released_planes);
@@ -677,10 +685,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu noisy seeds' planes dropped as where a volume of points ends, %zu kept by the small-plane "
        "pass (%zu brought to eps by completion, %zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved, %zu left beyond their members' spacing, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.volume_layers, stats.small_seeds, stats.small_completed, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_moved, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_moved, stats.member_gap_refused, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)

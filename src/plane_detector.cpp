@@ -276,20 +276,34 @@ boundTailsByClutter (const PointSet& points, const NeighborGraph& graph, const s
   * sees as a rim of missed voxels on each side of a noisy plane (near an edge too, where the
   * normals bend and the noise is the same). Every mode but Tails' inside-a-plane case reaches no
   * farther than kAssignReachRadii from the plane's members along the graph. Each round reads the
-  * labels of the round before, so the result does not depend on the thread count.
+  * labels of the round before, so the result does not depend on the thread count. With member
+  * gaps (Tails; DetectorParameters::member_gaps) a sample joins a plane only where it lies among
+  * its members (vouchingGaps, admittingGap). \a refused: the samples left at the end that member
+  * gaps kept from a plane that would otherwise have taken them.
   * \return samples assigned */
 std::size_t
 assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
-                        std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+                        std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, std::size_t& refused)
 {
+  refused = 0;
   const bool edges_only = params.final_assignment == FinalAssignment::Edges ||
                           params.final_assignment == FinalAssignment::Tails;
   const bool tails = params.final_assignment == FinalAssignment::Tails;
   // One median per plane serves both of Tails' bounds.
   const std::vector<double> median = tails ? medianDistances (points, params, patches) : std::vector<double> ();
   std::vector<double> tail_limit = tails ? bandsOf (patches, median, kTailSigmas) : std::vector<double> ();
-  if (tails && params.tail_odds)
-    boundTailsByClutter (points, graph, patches, median, labels, tail_limit);
+  // Planes in clutter: where the clutter beside a plane outweighs its noise within its 4 σ tail.
+  std::vector<char> in_clutter;
+  if (tails && (params.tail_odds || params.member_gaps))
+  {
+    std::vector<double> bounded = tail_limit;
+    boundTailsByClutter (points, graph, patches, median, labels, bounded);
+    if (params.member_gaps)
+      for (std::size_t l = 0; l < patches.size (); ++l)
+        in_clutter.push_back (bounded[l] < tail_limit[l]);
+    if (params.tail_odds)
+      tail_limit = bounded;
+  }
   const std::vector<double> edge_limit = tails ? bandsOf (patches, median, kBandSigmas) : std::vector<double> ();
   std::vector<std::uint32_t> left;
   for (std::uint32_t i = 0; i < labels.size (); ++i)
@@ -302,10 +316,20 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   for (const auto i : left)
     reach[i] = std::numeric_limits<float>::infinity ();
   std::vector<float> chosen_reach (left.size ());
+  // Member gaps (departure, see DetectorParameters::member_gaps): the spacing each member vouches
+  // with; a joiner vouches with the one that admitted it.
+  std::vector<float> gaps;
+  if (tails && params.member_gaps && std::find (in_clutter.begin (), in_clutter.end (), 1) != in_clutter.end ())
+    gaps = vouchingGaps (points, graph, patches, labels, left, in_clutter, params.num_threads);
+  std::vector<float> chosen_gap (gaps.empty () ? 0 : left.size ());
+  std::vector<char> beyond (gaps.empty () ? 0 : labels.size (), 0); // last refused by member gaps
   // Per sample, its k-neighbourhood's radius, measured once when first needed (rounds revisit it).
   std::vector<float> radius (labels.size (), -1.0f);
   std::size_t assigned = 0;
-  for (;;)
+  // Per sample, the round it joined a plane in (0: before the pass). A sample none of whose
+  // neighbours joined in the last round is judged on the same labels as then: it stays left.
+  std::vector<std::uint32_t> joined_in (labels.size (), 0);
+  for (std::uint32_t round = 1;; ++round)
   {
     const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (left.size ());
 #pragma omp parallel for schedule(dynamic, 256) num_threads(resolveThreads (params.num_threads))
@@ -313,6 +337,15 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
     {
       const std::uint32_t i = left[j];
       choice[j] = kNoPatch;
+      if (round > 1)
+      {
+        bool changed = false;
+        graph.forEachNeighbor (i, [&] (std::uint32_t n) { changed = changed || joined_in[n] + 1 == round; });
+        if (!changed)
+          continue;
+      }
+      if (!beyond.empty ())
+        beyond[i] = 0;
       bool beside_one = false; // Tails: the sample's labelled neighbours all hold one plane
       if (edges_only)
       {
@@ -357,18 +390,39 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
         graph.forEachNeighbor (n, [&] (std::uint32_t m) { mutual = mutual || m == i; });
         if (!mutual)
           return;
+        float admitted = 0.0f;
+        if (!gaps.empty () && in_clutter[l])
+        {
+          admitted = admittingGap (points, graph, patch, l, labels, gaps, i);
+          if (std::isnan (admitted))
+          {
+            beyond[i] = 1;
+            return;
+          }
+        }
         best = r;
         choice[j] = l;
         chosen_reach[j] = beside_one ? 0.0f : static_cast<float> (path);
+        if (!gaps.empty ())
+          chosen_gap[j] = admitted;
       });
     }
     for (std::size_t j = 0; j < left.size (); ++j)
       if (choice[j] != kNoPatch)
+      {
         reach[left[j]] = chosen_reach[j];
+        joined_in[left[j]] = round;
+        if (!gaps.empty ())
+          gaps[left[j]] = chosen_gap[j];
+      }
     const std::size_t added = applyChoices (left, choice, patches, labels);
     assigned += added;
     if (added == 0)
+    {
+      refused = static_cast<std::size_t> (
+          std::count_if (left.begin (), left.end (), [&] (std::uint32_t i) { return !beyond.empty () && beyond[i]; }));
       return assigned;
+    }
   }
 }
 
@@ -1110,7 +1164,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {
     labels = labelSamples (points.size (), patches); // the small-plane pass may have dropped patches
-    st.assigned = assignRemainingSamples (points, graph, params, patches, labels);
+    st.assigned = assignRemainingSamples (points, graph, params, patches, labels, st.member_gap_refused);
   }
   lap ("last assignment");
   if (params.position_planes && !patches.empty ())
@@ -1126,7 +1180,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     st.position_planes = seedPositionPlanes (points, graph, params, noise, bandsOf (patches, median, kBandSigmas),
                                              patches, labels);
     if (st.position_planes > 0 && params.final_assignment != FinalAssignment::None)
-      st.assigned += assignRemainingSamples (points, graph, params, patches, labels);
+      st.assigned += assignRemainingSamples (points, graph, params, patches, labels, st.member_gap_refused);
   }
   lap ("position planes");
   if (params.edge_sides && patches.size () >= 2)

@@ -90,7 +90,92 @@ inDetachedGroup (const PointSet& points, const NeighborGraph& graph, const Eigen
   }
   return true;
 }
+
+/** The in-plane distance from sample \a i to the nearest of its graph neighbours that \a in
+  * accepts, in the plane of normal \a normal (infinity if none). */
+template <typename Accept>
+double
+nearestInPlane (const PointSet& points, const NeighborGraph& graph, const Eigen::Vector3d& normal, std::uint32_t i,
+                Accept in)
+{
+  const Eigen::Vector3d p = points.points[i].cast<double> ();
+  double nearest = HUGE_VAL;
+  graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+    if (!in (m))
+      return;
+    const Eigen::Vector3d v = points.points[m].cast<double> () - p;
+    nearest = std::min (nearest, (v - v.dot (normal) * normal).norm ());
+  });
+  return nearest;
+}
+
 } // namespace
+
+std::vector<float>
+vouchingGaps (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
+              const std::vector<std::uint32_t>& labels, const std::vector<std::uint32_t>& open,
+              const std::vector<char>& judged, int num_threads)
+{
+  const int threads = resolveThreads (num_threads);
+  std::vector<float> gap (labels.size (), -1.0f);
+  // The members next to an open sample (they vouch), then their neighbours in their own plane
+  // (they tell whether those are supported).
+  std::vector<std::uint32_t> members;
+  const auto collect = [&] (std::uint32_t m, std::uint32_t l) {
+    if (labels[m] != kNoPatch && labels[m] == l && judged[l] && gap[m] < 0.0f)
+    {
+      gap[m] = 0.0f;
+      members.push_back (m);
+    }
+  };
+  for (const std::uint32_t i : open)
+    graph.forEachNeighbor (i, [&] (std::uint32_t m) { collect (m, labels[m]); });
+  const std::size_t vouching = members.size ();
+  for (std::size_t j = 0; j < vouching; ++j)
+    graph.forEachNeighbor (members[j], [&] (std::uint32_t m) { collect (m, labels[members[j]]); });
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (members.size ());
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (std::ptrdiff_t j = 0; j < count; ++j)
+  {
+    const std::uint32_t m = members[j];
+    gap[m] = static_cast<float> (nearestInPlane (points, graph, patches[labels[m]].normal, m,
+                                                 [&] (std::uint32_t o) { return labels[o] == labels[m]; }));
+  }
+  std::vector<float> vouch (vouching);
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (std::ptrdiff_t j = 0; j < static_cast<std::ptrdiff_t> (vouching); ++j)
+  {
+    const std::uint32_t m = members[j];
+    std::vector<float> around;
+    graph.forEachNeighbor (m, [&] (std::uint32_t o) {
+      if (labels[o] == labels[m] && std::isfinite (gap[o]))
+        around.push_back (gap[o]);
+    });
+    const bool supported = !around.empty () && gap[m] <= kSupportGapRatio * medianInPlace (around);
+    vouch[j] = supported ? gap[m] : std::numeric_limits<float>::infinity ();
+  }
+  for (std::size_t j = 0; j < vouching; ++j)
+    gap[members[j]] = vouch[j];
+  for (std::size_t j = vouching; j < members.size (); ++j)
+    gap[members[j]] = -1.0f; // measured only to judge the members next to open samples
+  return gap;
+}
+
+float
+admittingGap (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, std::uint32_t l,
+              const std::vector<std::uint32_t>& labels, const std::vector<float>& gaps, std::uint32_t i)
+{
+  std::vector<float> around;
+  graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+    if (labels[m] == l && gaps[m] >= 0.0f && std::isfinite (gaps[m]))
+      around.push_back (gaps[m]);
+  });
+  if (around.empty ())
+    return std::numeric_limits<float>::quiet_NaN ();
+  const double gap = nearestInPlane (points, graph, plane.normal, i, [&] (std::uint32_t m) { return labels[m] == l; });
+  const float typical = medianInPlace (around);
+  return gap <= kSupportGapRatio * static_cast<double> (typical) ? typical : std::numeric_limits<float>::quiet_NaN ();
+}
 
 std::size_t
 releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,

@@ -260,3 +260,73 @@ TEST (PlaneSupport, SameReleaseAtAnyScaleOffsetAndThreadCount)
   EXPECT_EQ (a.labels, b.labels);
   EXPECT_EQ (a.labels, c.labels);
 }
+
+namespace
+{
+/** The grid with its last \a open samples taken off the plane (no plane holds them): the member
+  * gaps beside them, as the last assignment measures them. */
+struct OpenScene
+{
+  Scene s;
+  NeighborGraph graph;
+  std::vector<std::uint32_t> open;
+  std::vector<float> gaps;
+};
+
+OpenScene
+openLast (Scene s, std::size_t open)
+{
+  OpenScene o;
+  const std::size_t members = s.set.size () - open;
+  for (std::size_t i = members; i < s.set.size (); ++i)
+  {
+    s.labels[i] = kNoPatch;
+    o.open.push_back (static_cast<std::uint32_t> (i));
+  }
+  s.patches[0].members.resize (members);
+  o.graph = rspd_test::bruteForceGraph (s.set.points, kK);
+  o.gaps = vouchingGaps (s.set, o.graph, s.patches, s.labels, o.open, {1}, 0);
+  o.s = std::move (s);
+  return o;
+}
+
+float
+admitted (const OpenScene& o, std::uint32_t i)
+{
+  return admittingGap (o.s.set, o.graph, o.s.patches[0], 0, o.s.labels, o.gaps, i);
+}
+} // namespace
+
+TEST (MemberGaps, ASampleAmongTheMembersIsAdmittedWithTheirSpacingAndOneBeyondItIsNot)
+{
+  // Three samples no plane holds: amid the grid (0.035 from its nearest member), 0.2 beyond the rim
+  // (4 spacings) and 0.4 beyond it (8 spacings, more than kSupportGapRatio). The first two are
+  // admitted at the grid's spacing, the third is not; the same x1000 and 1 km away.
+  const std::vector<Eigen::Vector3f> extra {{0.5f, 0.5f, 0.002f}, {1.175f, 0.525f, 0.0f}, {1.375f, 0.525f, 0.0f}};
+  const OpenScene a = openLast (gridWith (extra), 3);
+  EXPECT_NEAR (admitted (a, 400), 0.05, 1e-5);
+  EXPECT_NEAR (admitted (a, 401), 0.05, 1e-5);
+  EXPECT_TRUE (std::isnan (admitted (a, 402)));
+
+  Scene moved = gridWith (extra);
+  for (auto& p : moved.set.points)
+    p = p * 1000.0f + Eigen::Vector3f (1e6f, 0, 0);
+  moved.patches[0].center = Eigen::Vector3d (1e6, 0, 0);
+  const OpenScene b = openLast (moved, 3);
+  EXPECT_NEAR (admitted (b, 400), 50.0, 0.1);
+  EXPECT_NEAR (admitted (b, 401), 50.0, 0.1);
+  EXPECT_TRUE (std::isnan (admitted (b, 402)));
+}
+
+TEST (MemberGaps, OnlySupportedMembersNextToOpenSamplesVouch)
+{
+  // The plane holds an outlier 0.525 beyond its rim (10 spacings, its own neighbours' gaps 0.05):
+  // it does not vouch (infinite gap), the rim member beside the open sample does (0.05), and a
+  // member next to no open sample is not measured (-1).
+  const OpenScene o = openLast (gridWith ({{1.5f, 0.525f, 0.0f}, {1.6f, 0.525f, 0.0f}}), 1);
+  EXPECT_TRUE (std::isinf (o.gaps[400]));
+  EXPECT_NEAR (o.gaps[19 * 20 + 10], 0.05, 1e-5); // (0.975, 0.525): the rim's nearest
+  EXPECT_EQ (o.gaps[0], -1.0f);                     // (0.025, 0.025)
+  // The open sample lies 0.1 from the outlier member and is judged by the rim's spacing.
+  EXPECT_NEAR (admitted (o, 401), 0.05, 1e-5);
+}

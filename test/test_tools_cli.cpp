@@ -318,6 +318,9 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_odds_on.pcd", {"--tail-odds", "on"}));
   labels ("r.pcd", "room_odds_off.pcd", {"--tail-odds=off"}); // accepted (status 0)
   EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--tail-odds", "1"}).status, 2);
+  EXPECT_TRUE (room == labels ("r.pcd", "room_gaps_on.pcd", {"--member-gaps", "on"}));
+  labels ("r.pcd", "room_gaps_off.pcd", {"--member-gaps=off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--member-gaps", "no"}).status, 2);
   EXPECT_TRUE (room == labels ("r.pcd", "room_release_on.pcd", {"--release", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_release_off.pcd", {"--release=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_sides_on.pcd", {"--edge-sides", "on"}));

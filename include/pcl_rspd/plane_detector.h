@@ -329,6 +329,14 @@ struct DetectorParameters
     * band wherever a voxel boundary lies there: F1 over 16 voxel grids, median 0.981 -> 0.987, lowest
     * 0.975 -> 0.982. false = the Tails rule's 4 σ for every plane. */
   bool tail_odds = true;
+  /** \brief Departure (member gaps): the Tails rule gives a sample to a plane only where it lies
+    * among the plane's members: its in-plane gap to the nearest member beside it within
+    * kSupportGapRatio times the gaps of those members that are supported themselves, a joiner
+    * vouching for the next with the spacing that admitted it (pcl::rspd::vouchingGaps). In clutter
+    * beside a rim, the rounds chained the plane from outlier to outlier: a facade at σ 4.3 cm with
+    * 15 % outliers took 1,027 outliers more than 20 cm beyond its planes' rims, F1 0.928 -> 0.988.
+    * false = the Tails rule by distance, normal and neighbours alone. */
+  bool member_gaps = true;
   /** \brief Departure (far members): once grow-merge and the small-plane pass are stable, members
     * farther from their plane's last estimate than max(MDP, 3 σ) (σ = 1.4826 median |d| of its
     * members) are released; growth restricted to them follows (rounds reading the round before: a
@@ -645,6 +653,7 @@ struct DetectorStatistics
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
+  std::size_t member_gap_refused = 0; ///< samples it left out as beyond the spacing of the members beside them (member_gaps)
   std::size_t position_planes = 0;   ///< planes found by position among what was left (position_planes)
   std::size_t unsupported = 0;       ///< samples released as beyond their plane's rim (support_check)
   std::size_t thick_rebound = 0;     ///< small-plane passes whose thick cells were collected again (thick_cells_follow_noisy_seeds)

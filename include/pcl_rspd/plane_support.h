@@ -94,5 +94,47 @@ std::size_t
 releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
                            int num_threads, std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
 
+/** \brief Member gaps (departure, DetectorParameters::member_gaps): the in-plane gaps by which the
+  * members next to the \a open samples vouch for them in the last assignment.
+  *
+  * The last assignment offers a sample growth left to the planes its graph neighbours hold, round by
+  * round, each joiner offering the plane on to the samples beside it. In clutter beside a plane's
+  * rim (the facade's outliers in its wall's band) that chain crossed the clutter: an outlier whose
+  * k-neighbourhood reaches the dense rim has its neighbours in the plane, the next one has the first
+  * one, and so on (a facade at σ 4.3 cm, 15 % outliers: 1,027 outliers more than 20 cm beyond their
+  * planes' rims, F1 0.928). A sample joins a plane only where it lies among its members: its
+  * in-plane gap to the nearest of them within kSupportGapRatio times their own gaps
+  * (admittingGap); a joiner vouches for the next with the spacing that admitted it, so the chain
+  * follows the plane's own samples along an edge band but not across clutter many spacings apart.
+  *
+  * Per member next to an open sample: its in-plane gap to the nearest graph neighbour in its own
+  * plane, if that is within kSupportGapRatio times the median of those neighbours' own gaps (as the
+  * plane support asks); infinity for an unsupported member (an outlier growth took beside the rim,
+  * which would vouch for the clutter around it); -1 for every other sample. Gaps are lengths in
+  * the samples' own neighbourhoods, compared as ratios: no scale enters.
+  * \param[in] points samples
+  * \param[in] graph k-NN graph
+  * \param[in] patches planes, indexed by label
+  * \param[in] labels per-sample plane label (kNoPatch: none)
+  * \param[in] open the samples the last assignment offers to the planes
+  * \param[in] judged per plane, whether its members are measured (the planes in clutter)
+  * \param[in] num_threads OpenMP threads (0: default)
+  */
+std::vector<float>
+vouchingGaps (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
+              const std::vector<std::uint32_t>& labels, const std::vector<std::uint32_t>& open,
+              const std::vector<char>& judged, int num_threads);
+
+/** \brief Whether sample \a i lies among the members of plane \a l beside it (member gaps, see
+  * vouchingGaps): the median of the vouching \a gaps of its graph neighbours in \a l, if its in-plane
+  * gap to the nearest of those neighbours is within kSupportGapRatio times it; NaN otherwise (none
+  * vouches, or it lies beyond their spacing).
+  * \param[in] gaps as vouchingGaps returns, with the last assignment's joiners given the gap that
+  *            admitted them
+  */
+float
+admittingGap (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, std::uint32_t l,
+              const std::vector<std::uint32_t>& labels, const std::vector<float>& gaps, std::uint32_t i);
+
 } // namespace rspd
 } // namespace pcl

@@ -176,6 +176,11 @@ struct RobustPlane
   *    inside one plane join it if their normal passes its MND and they lie within 4 robust standard
   *    deviations of it (the noise tail MDP cuts off); the first kind reaches no farther than 3
   *    neighbourhood radii from the plane's grown members;
+  *  - member gaps (setMemberGaps(false) for the last assignment above alone): beside a plane in
+  *    clutter, a sample joins it only where it lies among its members, its in-plane gap to the
+  *    nearest within 6 times the gaps of the supported members beside it (a joiner vouches with
+  *    the spacing that admitted it), so the rounds do not chain the plane from outlier to outlier
+  *    through the clutter beyond its rim;
   *  - position planes (setPositionPlanes(false) for the paper): then, among the samples no plane
   *    holds, planes fitted by position alone in each part the k-NN graph connects, kept if ε or more
   *    lie within the noise of the noisiest plane found and bend no more than noise (a small face
@@ -505,6 +510,17 @@ public:
   /** \brief Whether each plane's tail ends where the clutter beside it outweighs its noise. */
   bool
   getTailOdds () const { return params_.tail_odds; }
+
+  /** \brief Member gaps (default true; false = the last assignment by distance, normal and
+    * neighbours alone): the last assignment gives a sample to a plane only where it lies among the
+    * plane's members, its in-plane gap to the nearest within 6 times theirs, so that it does not
+    * chain from outlier to outlier through the clutter beside a rim. See
+    * pcl::rspd::DetectorParameters::member_gaps. */
+  void
+  setMemberGaps (bool enable);
+  /** \brief Whether the last assignment keeps to the spacing of each plane's members. */
+  bool
+  getMemberGaps () const { return params_.member_gaps; }
 
   /** \brief Normals turn at a hinge (default true; false = positions alone): a seed or a group of
     * cells is bent at an edge, and seeds nothing, only if its two sides' mean normals turn by more

@@ -362,6 +362,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setTailOdds (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setMemberGaps (bool enable)
+{
+  params_.member_gaps = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setHingeNormalTurn (bool enable)
 {
   params_.hinge_normal_turn = enable;
