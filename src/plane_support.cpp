@@ -92,11 +92,12 @@ inDetachedGroup (const PointSet& points, const NeighborGraph& graph, const Eigen
 }
 
 /** The in-plane distance from sample \a i to the nearest of its graph neighbours that \a in
-  * accepts, in the plane of normal \a normal (infinity if none). */
+  * accepts, in the plane of normal \a normal (infinity if none); with \a distinct, the nearest
+  * that does not coincide with it in the plane. */
 template <typename Accept>
 double
 nearestInPlane (const PointSet& points, const NeighborGraph& graph, const Eigen::Vector3d& normal, std::uint32_t i,
-                Accept in)
+                bool distinct, Accept in)
 {
   const Eigen::Vector3d p = points.points[i].cast<double> ();
   double nearest = HUGE_VAL;
@@ -104,7 +105,9 @@ nearestInPlane (const PointSet& points, const NeighborGraph& graph, const Eigen:
     if (!in (m))
       return;
     const Eigen::Vector3d v = points.points[m].cast<double> () - p;
-    nearest = std::min (nearest, (v - v.dot (normal) * normal).norm ());
+    const double d = (v - v.dot (normal) * normal).norm ();
+    if (d > 0.0 || !distinct)
+      nearest = std::min (nearest, d);
   });
   return nearest;
 }
@@ -138,7 +141,9 @@ vouchingGaps (const PointSet& points, const NeighborGraph& graph, const std::vec
   for (std::ptrdiff_t j = 0; j < count; ++j)
   {
     const std::uint32_t m = members[j];
-    gap[m] = static_cast<float> (nearestInPlane (points, graph, patches[labels[m]].normal, m,
+    // The spacing of the plane's samples, not of duplicates (a scan's repeated points): the
+    // nearest member apart from it in the plane.
+    gap[m] = static_cast<float> (nearestInPlane (points, graph, patches[labels[m]].normal, m, true,
                                                  [&] (std::uint32_t o) { return labels[o] == labels[m]; }));
   }
   std::vector<float> vouch (vouching);
@@ -172,7 +177,8 @@ admittingGap (const PointSet& points, const NeighborGraph& graph, const PlanarPa
   });
   if (around.empty ())
     return std::numeric_limits<float>::quiet_NaN ();
-  const double gap = nearestInPlane (points, graph, plane.normal, i, [&] (std::uint32_t m) { return labels[m] == l; });
+  const double gap =
+      nearestInPlane (points, graph, plane.normal, i, false, [&] (std::uint32_t m) { return labels[m] == l; });
   const float typical = medianInPlace (around);
   return gap <= kSupportGapRatio * static_cast<double> (typical) ? typical : std::numeric_limits<float>::quiet_NaN ();
 }

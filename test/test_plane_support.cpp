@@ -330,3 +330,28 @@ TEST (MemberGaps, OnlySupportedMembersNextToOpenSamplesVouch)
   // The open sample lies 0.1 from the outlier member and is judged by the rim's spacing.
   EXPECT_NEAR (admitted (o, 401), 0.05, 1e-5);
 }
+
+TEST (MemberGaps, DuplicatedSamplesAreNoSpacing)
+{
+  // Every grid sample repeated (a scan's repeated points): each member's nearest member is its
+  // copy, 0 away; its gap is the grid's spacing to the next one, so a sample 0.2 beyond the rim is
+  // admitted as on the plain grid (with gaps of 0 every sample not on a member would be refused:
+  // room_scan1 lost 1,884 samples of its planes' tails that way before this rule).
+  Scene s = gridWith ({});
+  const std::size_t n = s.set.size ();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3f p = s.set.points[i];
+    s.set.points.push_back (p);
+    s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+    s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+  }
+  s.set.points.push_back ({1.175f, 0.525f, 0.0f});
+  s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+  s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+  s.patches = rspd_test::onePatchOfAll (s.set.size (), 0.01, 0.1);
+  s.labels = labelSamples (s.set.size (), s.patches);
+  const OpenScene o = openLast (std::move (s), 1);
+  EXPECT_NEAR (o.gaps[19 * 20 + 10], 0.05, 1e-5);
+  EXPECT_NEAR (admitted (o, 800), 0.05, 1e-5);
+}
