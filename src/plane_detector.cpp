@@ -319,7 +319,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   // Member gaps (departure, see DetectorParameters::member_gaps): the spacing each member vouches
   // with; a joiner vouches with the one that admitted it.
   std::vector<float> gaps;
-  if (tails && params.member_gaps && std::find (in_clutter.begin (), in_clutter.end (), 1) != in_clutter.end ())
+  if (std::find (in_clutter.begin (), in_clutter.end (), 1) != in_clutter.end ()) // filled for member gaps only
     gaps = vouchingGaps (points, graph, patches, labels, left, in_clutter, params.num_threads);
   std::vector<float> chosen_gap (gaps.empty () ? 0 : left.size ());
   std::vector<char> beyond (gaps.empty () ? 0 : labels.size (), 0); // last refused by member gaps
@@ -419,8 +419,8 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
     assigned += added;
     if (added == 0)
     {
-      refused = static_cast<std::size_t> (
-          std::count_if (left.begin (), left.end (), [&] (std::uint32_t i) { return !beyond.empty () && beyond[i]; }));
+      if (!beyond.empty ())
+        refused = static_cast<std::size_t> (std::count_if (left.begin (), left.end (), [&] (std::uint32_t i) { return beyond[i]; }));
       return assigned;
     }
   }

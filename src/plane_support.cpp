@@ -91,25 +91,12 @@ inDetachedGroup (const PointSet& points, const NeighborGraph& graph, const Eigen
   return true;
 }
 
-/** The in-plane distance from sample \a i to the nearest of its graph neighbours that \a in
-  * accepts, in the plane of normal \a normal (infinity if none); with \a distinct, the nearest
-  * that does not coincide with it in the plane. */
-template <typename Accept>
+/** The in-plane distance between samples \a i and \a m, in the plane of normal \a normal. */
 double
-nearestInPlane (const PointSet& points, const NeighborGraph& graph, const Eigen::Vector3d& normal, std::uint32_t i,
-                bool distinct, Accept in)
+inPlaneDistance (const PointSet& points, const Eigen::Vector3d& normal, std::uint32_t i, std::uint32_t m)
 {
-  const Eigen::Vector3d p = points.points[i].cast<double> ();
-  double nearest = HUGE_VAL;
-  graph.forEachNeighbor (i, [&] (std::uint32_t m) {
-    if (!in (m))
-      return;
-    const Eigen::Vector3d v = points.points[m].cast<double> () - p;
-    const double d = (v - v.dot (normal) * normal).norm ();
-    if (d > 0.0 || !distinct)
-      nearest = std::min (nearest, d);
-  });
-  return nearest;
+  const Eigen::Vector3d v = points.points[m].cast<double> () - points.points[i].cast<double> ();
+  return (v - v.dot (normal) * normal).norm ();
 }
 
 } // namespace
@@ -143,8 +130,15 @@ vouchingGaps (const PointSet& points, const NeighborGraph& graph, const std::vec
     const std::uint32_t m = members[j];
     // The spacing of the plane's samples, not of duplicates (a scan's repeated points): the
     // nearest member apart from it in the plane.
-    gap[m] = static_cast<float> (nearestInPlane (points, graph, patches[labels[m]].normal, m, true,
-                                                 [&] (std::uint32_t o) { return labels[o] == labels[m]; }));
+    double nearest = HUGE_VAL;
+    graph.forEachNeighbor (m, [&] (std::uint32_t o) {
+      if (labels[o] != labels[m])
+        return;
+      const double d = inPlaneDistance (points, patches[labels[m]].normal, m, o);
+      if (d > 0.0)
+        nearest = std::min (nearest, d);
+    });
+    gap[m] = static_cast<float> (nearest);
   }
   std::vector<float> vouch (vouching);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
@@ -171,14 +165,16 @@ admittingGap (const PointSet& points, const NeighborGraph& graph, const PlanarPa
               const std::vector<std::uint32_t>& labels, const std::vector<float>& gaps, std::uint32_t i)
 {
   std::vector<float> around;
+  double gap = HUGE_VAL; // to the nearest neighbour in l, vouching or not
   graph.forEachNeighbor (i, [&] (std::uint32_t m) {
-    if (labels[m] == l && gaps[m] >= 0.0f && std::isfinite (gaps[m]))
+    if (labels[m] != l)
+      return;
+    gap = std::min (gap, inPlaneDistance (points, plane.normal, i, m));
+    if (gaps[m] >= 0.0f && std::isfinite (gaps[m]))
       around.push_back (gaps[m]);
   });
   if (around.empty ())
     return std::numeric_limits<float>::quiet_NaN ();
-  const double gap =
-      nearestInPlane (points, graph, plane.normal, i, false, [&] (std::uint32_t m) { return labels[m] == l; });
   const float typical = medianInPlace (around);
   return gap <= kSupportGapRatio * static_cast<double> (typical) ? typical : std::numeric_limits<float>::quiet_NaN ();
 }

@@ -108,8 +108,9 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
   * follows the plane's own samples along an edge band but not across clutter many spacings apart.
   *
   * Per member next to an open sample: its in-plane gap to the nearest graph neighbour in its own
-  * plane that does not coincide with it (duplicates, as a scan repeats points, are no spacing), if that is within kSupportGapRatio times the median of those neighbours' own gaps (as the
-  * plane support asks); infinity for an unsupported member (an outlier growth took beside the rim,
+  * plane that does not coincide with it (duplicates, as a scan repeats points, are no spacing),
+  * if that is within kSupportGapRatio times the median of those neighbours' own gaps (as the plane
+  * support asks); infinity for an unsupported member (an outlier growth took beside the rim,
   * which would vouch for the clutter around it); -1 for every other sample. Gaps are lengths in
   * the samples' own neighbourhoods, compared as ratios: no scale enters.
   * \param[in] points samples
