@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
@@ -1160,6 +1161,10 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   // their distance to each plane, which its least-squares plane gives better than its robust estimate.
   if (params.final_refit)
     refitPlanes (points, params.num_threads, patches);
+  if (params.final_volume_layer_check && !patches.empty ())
+    // Final volume layers (departure, see DetectorParameters::final_volume_layer_check): on the
+    // refitted planes, before the last assignment gives their tails to the planes that stay.
+    st.final_volume_layers = dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads, patches, true);
   lap ("final refit");
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {
@@ -1177,9 +1182,21 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     for (const double m : median)
       if (std::isfinite (m))
         noise = std::max (noise, kMadScale * m);
+    const std::size_t found_before = patches.size ();
     st.position_planes = seedPositionPlanes (points, graph, params, noise, bandsOf (patches, median, kBandSigmas),
                                              patches, labels);
-    if (st.position_planes > 0 && params.final_assignment != FinalAssignment::None)
+    if (params.final_volume_layer_check && patches.size () > found_before)
+    {
+      // Judged as the planes before them were (final volume layers): the outliers a dropped plane
+      // left are found again by position (a unit plane at σ 1 cm in a slab of 40 % outliers).
+      std::vector<PlanarPatch> found (std::make_move_iterator (patches.begin () + found_before),
+                                      std::make_move_iterator (patches.end ()));
+      patches.resize (found_before);
+      st.final_volume_layers += dropVolumeLayers (points, graph, noiseBands (points, params, found), params.num_threads, found, true);
+      patches.insert (patches.end (), std::make_move_iterator (found.begin ()), std::make_move_iterator (found.end ()));
+      labels = labelSamples (points.size (), patches);
+    }
+    if (patches.size () > found_before && params.final_assignment != FinalAssignment::None)
       st.assigned += assignRemainingSamples (points, graph, params, patches, labels, st.member_gap_refused);
   }
   lap ("position planes");

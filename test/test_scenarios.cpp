@@ -513,6 +513,33 @@ TEST (Scenario, FacadeOutliersBeyondTheRimsAreNotChainedInByTheLastAssignment)
   EXPECT_EQ (without.stats.member_gap_refused, 0u);
 }
 
+TEST (Scenario, PlaneWrappedInASlabOfOutliersHasNoPlanesOfOutliers)
+{
+  // A unit plane at σ 1 cm with 20 % outliers in its box grown by 5 % of its diagonal: a slab 14 cm
+  // thick. Clean seeds among the outliers grew two planes beside the true one, 5,500 samples each,
+  // whose bands reach its own (F1 0.790, measured with rspd_segment --final-volume-layers off; the
+  // PCL SAC loop 0.805). Judged once final, each has about 13 times its samples in the layer beside
+  // its band, and is dropped.
+  pcl::rspd::SceneOptions o;
+  o.num_points = 100000;
+  o.noise = 0.01;
+  o.outlier_ratio = 0.2;
+  const Detection with = detectScene ("plane", o);
+  const Detection without = detectScene ("plane", o, true, pcl::rspd::NormalScale::Automatic,
+                                         [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                                           EXPECT_TRUE (s.getFinalVolumeLayerCheck ());
+                                           s.setFinalVolumeLayerCheck (false);
+                                           EXPECT_FALSE (s.getFinalVolumeLayerCheck ());
+                                         });
+  EXPECT_EQ (with.score.found, 1);
+  EXPECT_EQ (with.score.false_planes, 0);
+  EXPECT_GT (with.score.f1, 0.9);
+  EXPECT_EQ (with.stats.final_volume_layers, 2u);
+  EXPECT_GT (without.score.false_planes, 0);
+  EXPECT_LT (without.score.f1, 0.85);
+  EXPECT_EQ (without.stats.final_volume_layers, 0u);
+}
+
 TEST (Scenario, FacadeWithThirtyPercentOutliersKeepsItsWindows)
 {
   // 30 % outliers: in a window's band behind the wall each outlier the last assignment gave the
@@ -1207,7 +1234,8 @@ TEST (Scenario, LayersOfANoisyFaceAreMergedIntoOnePlane)
   // (measured: 2 fragments); merged, each face is one plane, and the door 2 cm proud of its wall
   // stays a plane of its own. Measured without the narrowed rim retest (issue #6's thirty-fourth
   // session): with it one of those layers is no plane of its own to begin with (layer merge off: 1
-  // fragment; on: one layer merged, none left); the defaults' result is checked too.
+  // fragment; on: one layer merged, none left); the defaults' result is checked too. Without the
+  // layer merge, the final volume layers drop one of those layers too (1 fragment left): off here.
   const Detection defaults = detectScene ("room");
   const Detection merged = detectScene ("room", {}, true, pcl::rspd::NormalScale::Automatic,
                                         [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setLeftRimRetest (false); });
@@ -1217,6 +1245,7 @@ TEST (Scenario, LayersOfANoisyFaceAreMergedIntoOnePlane)
                                          EXPECT_TRUE (s.getLayerMerge ());
                                          s.setLayerMerge (false);
                                          EXPECT_FALSE (s.getLayerMerge ());
+                                         s.setFinalVolumeLayerCheck (false);
                                        });
   EXPECT_EQ (defaults.score.found, 12);
   EXPECT_EQ (defaults.score.fragments, 0);
@@ -1301,7 +1330,8 @@ TEST (Scenario, FacadesOutliersEndingBelowTheWallAreNoPlane)
   // The facade with 25 % outliers at 100,000 points (seed 23): where the outliers' box ends below
   // the wall, a retested outlier seed grew into a slab 0.9 m thick (959 samples; the layer beside
   // its band on the outliers' side held 3.4 times as many). Measured: F1 0.9285 with one false
-  // plane without the volume-layer check, 0.9953 and none with it.
+  // plane without the volume-layer check, 0.9953 and none with it. The final volume layers, judging
+  // every plane once final, drop it too (0.9956 with them alone): both off for "without".
   pcl::rspd::SceneOptions o;
   o.num_points = 100000;
   o.outlier_ratio = 0.25;
@@ -1309,11 +1339,16 @@ TEST (Scenario, FacadesOutliersEndingBelowTheWallAreNoPlane)
   const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     EXPECT_TRUE (s.getVolumeLayerCheck ());
     s.setVolumeLayerCheck (false);
+    s.setFinalVolumeLayerCheck (false);
   };
+  const auto final_only = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setVolumeLayerCheck (false); };
   const Detection without = detectScene ("facade", o, true, pcl::rspd::NormalScale::Automatic, off);
+  const Detection last = detectScene ("facade", o, true, pcl::rspd::NormalScale::Automatic, final_only);
   const Detection with = detectScene ("facade", o);
   EXPECT_GE (without.score.false_planes, 1);
   EXPECT_LT (without.score.f1, 0.95);
+  EXPECT_EQ (last.score.false_planes, 0);
+  EXPECT_GE (last.stats.final_volume_layers, 1u);
   EXPECT_EQ (with.score.false_planes, 0);
   EXPECT_EQ (with.score.found, 16);
   EXPECT_GE (with.score.f1, 0.99);

@@ -327,6 +327,9 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_FALSE (room == labels ("r.pcd", "room_sides_off.pcd", {"--edge-sides=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_corners_on.pcd", {"--edge-corners", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_volume_on.pcd", {"--volume-layers", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_final_volume_on.pcd", {"--final-volume-layers", "on"}));
+  labels ("r.pcd", "room_final_volume_off.pcd", {"--final-volume-layers=off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--final-volume-layers", "no"}).status, 2);
   EXPECT_TRUE (room == labels ("r.pcd", "room_completion_on.pcd", {"--small-completion", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_corners_off.pcd", {"--edge-corners=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_wedges_on.pcd", {"--edge-wedges", "on"}));

@@ -105,6 +105,32 @@ TEST (VolumeLayers, OnlyNoisySeedsPlanesAreJudged)
   EXPECT_EQ (dropVolumeLayers (v.set, v.graph, v.band, 1, v.planes), 1u);
 }
 
+TEST (VolumeLayers, EveryPlaneIsJudgedOnceFinal)
+{
+  // DetectorParameters::final_volume_layer_check: the end of a volume is dropped however seeded.
+  VolumeEnd v;
+  v.planes[0].retested = false;
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, v.band, 1, v.planes, true), 1u);
+  EXPECT_TRUE (v.planes.empty ());
+}
+
+TEST (VolumeLayers, FacesOfAThinWallAreKeptWhenEveryPlaneIsJudged)
+{
+  // Two faces 5 cm apart (40 x 40 samples each over 2 x 2, σ 1 cm, bands 3 cm): each lies in the
+  // layer beside the other's band, which holds about as many samples as the face, not twice.
+  PointSet set;
+  const auto a = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 3);
+  const auto b = rspd_test::addRectangle (set, {0, 0, 0.05f}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 4);
+  const NeighborGraph graph = rspd_test::bruteForceGraph (set.points, 15);
+  std::vector<PlanarPatch> planes = {rspd_test::makePatch (a, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3),
+                                     rspd_test::makePatch (b, {1.0, 1.0, 0.05}, {0, 0, 1}, 0.03, 0.3)};
+  const std::size_t beside = samplesBesideBand (set, graph, planes[0], 0.03);
+  EXPECT_GT (beside, planes[1].members.size () / 4); // the other face is there
+  EXPECT_LT (beside, 2 * planes[0].members.size ());
+  EXPECT_EQ (dropVolumeLayers (set, graph, {0.03, 0.03}, 1, planes, true), 0u);
+  EXPECT_EQ (planes.size (), 2u);
+}
+
 TEST (VolumeLayers, ScaleAndThreadsDoNotChangeTheCount)
 {
   VolumeEnd v, mm (1000.0f);

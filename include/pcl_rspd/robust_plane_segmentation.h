@@ -769,6 +769,17 @@ public:
   bool
   getVolumeLayerCheck () const { return params_.volume_layer_check; }
 
+  /** \brief Final volume layers (default on; false = only noisy seeds' planes are judged): once the
+    * planes are final, before the last assignment, every plane is judged by the volume-layer rule
+    * (setVolumeLayerCheck), however it was seeded: a thin slab of outliers wrapping a plane grows
+    * planes of outliers from clean seeds, whose bands reach the true plane's. See
+    * pcl::rspd::DetectorParameters::final_volume_layer_check. */
+  void
+  setFinalVolumeLayerCheck (bool enable);
+  /** \brief Whether every final plane that ends a volume of samples is dropped. */
+  bool
+  getFinalVolumeLayerCheck () const { return params_.final_volume_layer_check; }
+
   /** \brief Curved-surface check (default on; false = the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the
     * surface normal by more than half the plane's MND between its middle and its rim (a facet of a

@@ -40,16 +40,19 @@ samplesBesideBand (const PointSet& points, const NeighborGraph& graph, const Pla
   * times as dense as the plane's own, and the plane is a share of a volume of samples where it
   * ends, whose neighbourhoods, cut by the end, give PCA normals across it. A layer of one noisy
   * face has about as many samples beside it as it holds. Planes found from ordinary seeds are not
-  * judged: two faces of a thin wall lie in each other's layer.
+  * judged, unless \a every_plane: two faces of a thin wall lie in each other's layer, and while one
+  * is still a seed the other outnumbers it; once the planes are final
+  * (DetectorParameters::final_volume_layer_check) the faces, of like density, about match.
   * \param[in] points samples
   * \param[in] graph their k-NN graph
   * \param[in] band per plane, the distance within which its noise lies
   * \param[in] num_threads OpenMP threads (0: OpenMP's default); the result does not depend on it
   * \param[in,out] patches the planes; those dropped are removed, order otherwise kept
+  * \param[in] every_plane judge every plane, not only the noisy seeds'
   * \return planes dropped */
 std::size_t
 dropVolumeLayers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
-                  int num_threads, std::vector<PlanarPatch>& patches);
+                  int num_threads, std::vector<PlanarPatch>& patches, bool every_plane = false);
 
 } // namespace rspd
 } // namespace pcl

@@ -544,6 +544,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setVolumeLayerCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setFinalVolumeLayerCheck (bool enable)
+{
+  params_.final_volume_layer_check = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setTrimmedSeedGrowth (bool enable)
 {
   params_.trimmed_seed_growth = enable;
