@@ -1172,6 +1172,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     st.assigned = assignRemainingSamples (points, graph, params, patches, labels, st.member_gap_refused);
   }
   lap ("last assignment");
+  if (params.curved_plane_check && params.late_curved_check && !patches.empty ())
+    // Late curved check (departure, see DetectorParameters::late_curved_check): with their tails,
+    // facets show the bend their bands cut off.
+    st.late_curved_planes = dropCurvedPlanes (points, params, patches, st.curved_tubes);
+  lap ("late curved check");
   if (params.position_planes && !patches.empty ())
   {
     // Position planes (departure, see DetectorParameters::position_planes), as noisy as the noisiest

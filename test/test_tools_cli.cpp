@@ -328,6 +328,9 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_corners_on.pcd", {"--edge-corners", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_volume_on.pcd", {"--volume-layers", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_final_volume_on.pcd", {"--final-volume-layers", "on"}));
+  EXPECT_TRUE (room == labels ("r.pcd", "room_late_curved_on.pcd", {"--late-curved", "on"}));
+  labels ("r.pcd", "room_late_curved_off.pcd", {"--late-curved=off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--late-curved", "no"}).status, 2);
   labels ("r.pcd", "room_final_volume_off.pcd", {"--final-volume-layers=off"}); // accepted (status 0)
   EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--final-volume-layers", "no"}).status, 2);
   EXPECT_TRUE (room == labels ("r.pcd", "room_completion_on.pcd", {"--small-completion", "on"}));

@@ -791,6 +791,16 @@ public:
   bool
   getCurvedPlaneCheck () const { return params_.curved_plane_check; }
 
+  /** \brief Late curved check (default on; false = the curved-surface check before the last
+    * assignment alone): the check runs again once the planes hold their noise tails, which bring in
+    * the bend a facet's band cut off. No effect with setCurvedPlaneCheck (false). See
+    * pcl::rspd::DetectorParameters::late_curved_check. */
+  void
+  setLateCurvedCheck (bool enable);
+  /** \brief Whether the curved-surface check runs again after the last assignment. */
+  bool
+  getLateCurvedCheck () const { return params_.late_curved_check; }
+
   /** \brief The curved-surface check drops a plane only if the residual of its normals' turn about a
     * line in the position is below this share of that about one step (default 0.5: a fold over up to
     * three faces is kept for the bent-plane split; +inf: every plane the quadric calls curved is

@@ -558,6 +558,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setTrimmedSeedGrowth (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setLateCurvedCheck (bool enable)
+{
+  params_.late_curved_check = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setCurvedPlaneCheck (bool enable)
 {
   params_.curved_plane_check = enable;
