@@ -282,14 +282,14 @@ struct DetectorParameters
     * false = such planes are kept. */
   bool volume_layer_check = true;
   /** \brief Departure (final volume layers, dropVolumeLayers on every plane): once the planes are
-    * final (after the layer merge and the final refit, before the last assignment), any plane, however
-    * seeded, is dropped by volume_layer_check's rule (the layer beside its noise band on one side, half
-    * as thick as the band, holds more than twice as many samples over its footprint as the plane).
-    * Where a thin slab of outliers wraps a plane, a clean seed among them grows a plane of outliers
-    * whose band reaches the true plane's: a unit plane at σ 1 cm in 20 % outliers kept two such
-    * planes, 5,500 samples each with 12.7 times as many beside them (F1 0.790 -> 0.927). Over the
-    * sweeps' 292 rows and the real scans, no final plane had more than 0.92 times its samples beside it.
-    * false = only noisy seeds' planes are judged. */
+    * final (after the layer merge and the final refit, before the last assignment; the position
+    * planes once found), any plane, however seeded, is dropped by volume_layer_check's rule (the layer
+    * beside its noise band on one side, half as thick as the band, holds more than twice as many
+    * samples over its footprint as the plane). Where a thin slab of outliers wraps a plane, a clean
+    * seed among them grows a plane of outliers whose band reaches the true plane's: a unit plane at
+    * σ 1 cm in 20 % outliers kept two such planes, 5,500 samples each with 12.7 times as many beside
+    * them (F1 0.790 -> 0.929). Over the sweeps' 342 rows and the real scans, no final plane had more
+    * than 0.92 times its samples beside it. false = only noisy seeds' planes are judged. */
   bool final_volume_layer_check = true;
   /** \brief Departure (small-plane completion, completeSmallPlanes; part of the small-plane pass):
     * before the pass drops its planes still short of ε, a plane a clean seed seeded that holds at
