@@ -32,7 +32,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
-    " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -173,6 +173,9 @@ const char* const kHelp =
     "  --final-volume-layers on|off  the same for every plane once the planes are final, however\n"
     "                   seeded: a thin slab of outliers wrapping a plane (default on; off = only\n"
     "                   noisy seeds' planes are judged)\n"
+    "  --in-band-layers on|off  with them, also drop a final plane within whose noise band\n"
+    "                   another plane holds four times its points: clutter beside a denser plane,\n"
+    "                   not a surface; the layer merge does not join it (default on; off = kept)\n"
     "  --bounded-reestimate on|off  a plane keeps its last estimate when a re-estimate's\n"
     "                   normal spread fails the paper's 60 degree test (default on; off = the\n"
     "                   paper: every re-estimate taken)\n"
@@ -277,6 +280,7 @@ struct Options
   bool retest_outlier_seeds = true;
   bool volume_layers = true;
   bool final_volume_layers = true;
+  bool in_band_layers = true;
   bool small_completion = true;
   bool bounded_reestimate = true;
   bool noisy_bent_split = false;
@@ -459,6 +463,8 @@ parseArguments (int argc, char** argv)
       o.volume_layers = option.choice ("on", "off");
     else if (arg == "--final-volume-layers")
       o.final_volume_layers = option.choice ("on", "off");
+    else if (arg == "--in-band-layers")
+      o.in_band_layers = option.choice ("on", "off");
     else if (arg == "--small-completion")
       o.small_completion = option.choice ("on", "off");
     else if (arg == "--curved-check")
@@ -673,6 +679,7 @@ run (const Options& o)
   seg.setOutlierSeedRetest (o.retest_outlier_seeds);
   seg.setVolumeLayerCheck (o.volume_layers);
   seg.setFinalVolumeLayerCheck (o.final_volume_layers);
+  seg.setInBandLayerCheck (o.in_band_layers);
   seg.setSmallPlaneCompletion (o.small_completion);
   seg.setBoundedReestimation (o.bounded_reestimate);
   seg.setNoisyPlaneBentSplit (o.noisy_bent_split);
@@ -699,10 +706,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu noisy seeds' planes dropped as where a volume of points ends, %zu kept by the small-plane "
        "pass (%zu brought to eps by completion, %zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends, %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends (%zu as layers inside a denser plane's band), %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.volume_layers, stats.small_seeds, stats.small_completed, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.in_band_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)

@@ -8,6 +8,7 @@
 #include <pcl_rspd/patch_growth.h>      // kNoPatch
 #include <pcl_rspd/patch_merge.h>       // normalsCompatible
 #include <pcl_rspd/robust_statistics.h> // medianInPlace, kMadScale
+#include <pcl_rspd/volume_layers.h>     // countLayerSamples, isInBandLayer
 
 #include <Eigen/Geometry> // cross
 
@@ -206,6 +207,12 @@ mergeBandLayers (const PointSet& points, const NeighborGraph& graph, const Detec
           best_share = share;
         }
       }
+      // A layer inside a denser plane's band is a share of the clutter or noise around it: joined,
+      // it would widen that plane's band into the clutter (DetectorParameters::in_band_layer_check).
+      if (into[a] != kNoPatch && params.final_volume_layer_check && params.in_band_layer_check &&
+          isInBandLayer (countLayerSamples (points, graph, pa, band[a], &labels, static_cast<std::uint32_t> (a)),
+                         pa.members.size ()))
+        into[a] = kNoPatch;
     }
   }
   std::size_t merged = 0;

@@ -1164,7 +1164,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   if (params.final_volume_layer_check && !patches.empty ())
     // Final volume layers (departure, see DetectorParameters::final_volume_layer_check): on the
     // refitted planes, before the last assignment gives their tails to the planes that stay.
-    st.final_volume_layers = dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads, patches, true);
+    st.final_volume_layers = dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads,
+                                               patches, true, 0, params.in_band_layer_check, &st.in_band_layers);
   lap ("final refit");
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {
@@ -1194,11 +1195,9 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     {
       // Judged as the planes before them were (final volume layers): the outliers a dropped plane
       // left are found again by position (a unit plane at σ 1 cm in a slab of 40 % outliers).
-      std::vector<PlanarPatch> found (std::make_move_iterator (patches.begin () + found_before),
-                                      std::make_move_iterator (patches.end ()));
-      patches.resize (found_before);
-      st.final_volume_layers += dropVolumeLayers (points, graph, noiseBands (points, params, found), params.num_threads, found, true);
-      patches.insert (patches.end (), std::make_move_iterator (found.begin ()), std::make_move_iterator (found.end ()));
+      st.final_volume_layers += dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads,
+                                                  patches, true, found_before, params.in_band_layer_check,
+                                                  &st.in_band_layers);
       labels = labelSamples (points.size (), patches);
     }
     if (patches.size () > found_before && params.final_assignment != FinalAssignment::None)

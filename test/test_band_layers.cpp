@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <algorithm>
 #include <cmath>
 
@@ -311,6 +313,39 @@ TEST (BandLayerMerge, TwoLayersOfOneNoisyFaceBecomeOnePlane)
   EXPECT_GT (std::abs (s.planes[0].normal.z ()), std::cos (1.0 * kDegree));
   // Nothing more to merge.
   EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
+}
+
+TEST (BandLayerMerge, ALayerOfClutterInsideTheFacesBandIsNotJoinedToIt)
+{
+  // 100 samples scattered over the face between 5 and 20 mm above it: among its samples, within its
+  // band (the median 12 mm), but a layer whose own band holds more than ten times its samples of
+  // the face. Joined, it would widen the face's band into the clutter
+  // (DetectorParameters::in_band_layer_check); without the rule it is joined.
+  const auto scene = [] {
+    LayerScene s;
+    const std::vector<std::uint32_t> face = rspd_test::addRectangle (s.set, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 40, 40, 0.005f, 7);
+    std::mt19937 rng (3);
+    std::uniform_real_distribution<float> u (0.0f, 1.0f);
+    std::vector<std::uint32_t> layer;
+    for (int i = 0; i < 100; ++i)
+    {
+      layer.push_back (static_cast<std::uint32_t> (s.set.points.size ()));
+      s.set.points.emplace_back (u (rng), u (rng), 0.005f + 0.015f * u (rng));
+      s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+      s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+    }
+    s.planes = {estimatedPatch (s.set, face), estimatedPatch (s.set, layer)};
+    s.graph = rspd_test::bruteForceGraph (s.set.points, 50); // footprint cells that cover the face
+    return s;
+  };
+  LayerScene s = scene ();
+  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
+  EXPECT_EQ (s.planes.size (), 2u);
+  LayerScene off = scene ();
+  DetectorParameters p = parameters ();
+  p.in_band_layer_check = false;
+  EXPECT_EQ (mergeBandLayers (off.set, off.graph, p, bandsOf (off), off.planes, labelsOf (off)), 1u);
+  EXPECT_EQ (off.planes.size (), 1u);
 }
 
 TEST (BandLayerMerge, PlaneOffTheBandOrTiltedOutOfItStays)

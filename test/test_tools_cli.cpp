@@ -333,6 +333,9 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--late-curved", "no"}).status, 2);
   labels ("r.pcd", "room_final_volume_off.pcd", {"--final-volume-layers=off"}); // accepted (status 0)
   EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--final-volume-layers", "no"}).status, 2);
+  EXPECT_TRUE (room == labels ("r.pcd", "room_in_band_on.pcd", {"--in-band-layers", "on"}));
+  labels ("r.pcd", "room_in_band_off.pcd", {"--in-band-layers=off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--in-band-layers", "no"}).status, 2);
   EXPECT_TRUE (room == labels ("r.pcd", "room_completion_on.pcd", {"--small-completion", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_corners_off.pcd", {"--edge-corners=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_wedges_on.pcd", {"--edge-wedges", "on"}));

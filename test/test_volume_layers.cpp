@@ -1,9 +1,11 @@
 /*
- * Tests of the volume-layer check (samplesBesideBand, dropVolumeLayers).
+ * Tests of the volume-layer check (samplesBesideBand, dropVolumeLayers) and of the in-band layers
+ * (countLayerSamples, isInBandLayer).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
 
+#include <pcl_rspd/patch_growth.h> // labelSamples
 #include <pcl_rspd/volume_layers.h>
 
 #include <gtest/gtest.h>
@@ -129,6 +131,114 @@ TEST (VolumeLayers, FacesOfAThinWallAreKeptWhenEveryPlaneIsJudged)
   EXPECT_LT (beside, 2 * planes[0].members.size ());
   EXPECT_EQ (dropVolumeLayers (set, graph, {0.03, 0.03}, 1, planes, true), 0u);
   EXPECT_EQ (planes.size (), 2u);
+}
+
+namespace
+{
+/** A dense face (z = 0 over 2 x 2, 60 x 60 samples, σ 1 cm, band 3 cm) and 400 samples scattered
+  * over it between z = 0.02 and 0.08, held by a plane through their middle whose band (6 cm) takes
+  * in the upper part of the face: a layer of clutter inside the face's band. */
+struct ClutterLayer
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<double> band {0.03, 0.06};
+  NeighborGraph graph;
+
+  ClutterLayer ()
+  {
+    const auto face = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 60, 60, 0.01f, 3);
+    std::mt19937 rng (7);
+    std::uniform_real_distribution<float> u (0.0f, 1.0f);
+    std::vector<std::uint32_t> layer;
+    for (int i = 0; i < 400; ++i)
+    {
+      layer.push_back (static_cast<std::uint32_t> (set.points.size ()));
+      set.points.emplace_back (2.0f * u (rng), 2.0f * u (rng), 0.02f + 0.06f * u (rng));
+      set.normals.push_back (Eigen::Vector3f::UnitZ ());
+      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
+    }
+    planes = {rspd_test::makePatch (face, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3),
+              rspd_test::makePatch (layer, {1.0, 1.0, 0.05}, {0, 0, 1}, 0.06, 0.3)};
+    // k = 50, as the automatic k gives at this size: the footprint's cells (the neighbourhood
+    // radius, 0.13) then cover the face under the layer's scattered samples.
+    graph = rspd_test::bruteForceGraph (set.points, 50);
+  }
+
+  std::vector<std::uint32_t>
+  labels () const
+  {
+    return labelSamples (set.points.size (), planes);
+  }
+};
+} // namespace
+
+TEST (InBandLayers, ALayerOfClutterInsideADenserPlanesBandIsDropped)
+{
+  ClutterLayer c;
+  const std::vector<std::uint32_t> labels = c.labels ();
+  const LayerCounts layer = countLayerSamples (c.set, c.graph, c.planes[1], c.band[1], &labels, 1);
+  // Within 6 cm of z = 0.05: the face's samples above z = -0.01 (84 % of 3,600) where the layer's
+  // footprint covers the face.
+  EXPECT_GT (layer.other_in_band, 2000u);
+  EXPECT_LT (layer.other_in_band, 3300u);
+  EXPECT_TRUE (isInBandLayer (layer, c.planes[1].members.size ()));
+  // The layer beside its band is the face's lower tail, not twice the layer: no volume layer.
+  EXPECT_EQ (layer.beside, samplesBesideBand (c.set, c.graph, c.planes[1], c.band[1]));
+  EXPECT_LT (layer.beside, 2 * c.planes[1].members.size ());
+  // The face holds the most within its own band; the clutter there is a tenth of it.
+  const LayerCounts face = countLayerSamples (c.set, c.graph, c.planes[0], c.band[0], &labels, 0);
+  EXPECT_FALSE (isInBandLayer (face, c.planes[0].members.size ()));
+
+  std::vector<PlanarPatch> kept = c.planes;
+  EXPECT_EQ (dropVolumeLayers (c.set, c.graph, c.band, 1, kept, true), 0u); // without the rule
+  EXPECT_EQ (kept.size (), 2u);
+  std::size_t in_band = 0;
+  EXPECT_EQ (dropVolumeLayers (c.set, c.graph, c.band, 2, kept, true, 0, true, &in_band), 1u);
+  EXPECT_EQ (in_band, 1u);
+  ASSERT_EQ (kept.size (), 1u);
+  EXPECT_EQ (kept[0].members.size (), 3600u);
+  // Only the planes from `first` on are judged; and only once final (every_plane).
+  std::vector<PlanarPatch> later = c.planes;
+  EXPECT_EQ (dropVolumeLayers (c.set, c.graph, c.band, 1, later, true, 2, true, &in_band), 0u);
+  later[1].retested = true;
+  EXPECT_EQ (dropVolumeLayers (c.set, c.graph, c.band, 1, later, false, 0, true, &in_band), 0u);
+  EXPECT_EQ (later.size (), 2u);
+  EXPECT_EQ (in_band, 1u);
+}
+
+TEST (InBandLayers, FacesOfLikeDensityInsideEachOthersBandAreKept)
+{
+  // Two faces 2 cm apart at σ 1 cm, bands 3 cm: each lies inside the other's band and holds about
+  // as many samples there as the other.
+  PointSet set;
+  const auto a = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 3);
+  const auto b = rspd_test::addRectangle (set, {0, 0, 0.02f}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 4);
+  const NeighborGraph graph = rspd_test::bruteForceGraph (set.points, 15);
+  std::vector<PlanarPatch> planes = {rspd_test::makePatch (a, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3),
+                                     rspd_test::makePatch (b, {1.0, 1.0, 0.02}, {0, 0, 1}, 0.03, 0.3)};
+  const std::vector<std::uint32_t> labels = labelSamples (set.points.size (), planes);
+  const LayerCounts c = countLayerSamples (set, graph, planes[0], 0.03, &labels, 0);
+  EXPECT_GT (c.other_in_band, planes[1].members.size () / 2);
+  EXPECT_FALSE (isInBandLayer (c, planes[0].members.size ()));
+  std::size_t in_band = 0;
+  EXPECT_EQ (dropVolumeLayers (set, graph, {0.03, 0.03}, 1, planes, true, 0, true, &in_band), 0u);
+  EXPECT_EQ (in_band, 0u);
+  EXPECT_EQ (planes.size (), 2u);
+}
+
+TEST (InBandLayers, LabelsThatDoNotFitAreNotCounted)
+{
+  ClutterLayer c;
+  const std::vector<std::uint32_t> short_labels (10, 0);
+  const LayerCounts none = countLayerSamples (c.set, c.graph, c.planes[1], c.band[1], &short_labels, 1);
+  EXPECT_EQ (none.other_in_band, 0u);
+  EXPECT_EQ (none.beside, samplesBesideBand (c.set, c.graph, c.planes[1], c.band[1]));
+  const std::vector<std::uint32_t> labels = c.labels ();
+  const LayerCounts nan = countLayerSamples (c.set, c.graph, c.planes[1], std::nan (""), &labels, 1);
+  EXPECT_EQ (nan.other_in_band, 0u);
+  EXPECT_EQ (nan.beside, 0u);
+  EXPECT_FALSE (isInBandLayer (nan, c.planes[1].members.size ()));
 }
 
 TEST (VolumeLayers, ScaleAndThreadsDoNotChangeTheCount)

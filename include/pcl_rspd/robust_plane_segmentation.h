@@ -780,6 +780,17 @@ public:
   bool
   getFinalVolumeLayerCheck () const { return params_.final_volume_layer_check; }
 
+  /** \brief In-band layers (default on; false = such planes are kept): with the final volume
+    * layers, a final plane within whose noise band another plane holds more than four times its
+    * samples over its footprint is dropped, and the layer merge does not join it to that plane: a
+    * plane grown among the clutter beside a denser one, whose band takes that plane in. See
+    * pcl::rspd::DetectorParameters::in_band_layer_check. */
+  void
+  setInBandLayerCheck (bool enable);
+  /** \brief Whether the final planes that are layers inside another plane's band are dropped. */
+  bool
+  getInBandLayerCheck () const { return params_.in_band_layer_check; }
+
   /** \brief Curved-surface check (default on; false = the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the
     * surface normal by more than half the plane's MND between its middle and its rim (a facet of a

@@ -10,12 +10,20 @@
 #include <pcl_rspd/point_set.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace pcl
 {
 namespace rspd
 {
+/** \brief What lies beside and inside a plane's noise band over its footprint (countLayerSamples). */
+struct LayerCounts
+{
+  std::size_t beside = 0;        ///< samplesBesideBand
+  std::size_t other_in_band = 0; ///< the most samples one other plane holds inside the band
+};
+
 /** \brief Samples in the layer beside a plane's noise band, on its denser side, over its footprint.
   *
   * The footprint: the cells, of the members' median neighbourhood radius (the distance to their
@@ -29,6 +37,26 @@ namespace rspd
   * \param[in] band the distance within which its noise lies */
 std::size_t
 samplesBesideBand (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double band);
+
+/** \brief samplesBesideBand, and the most samples that one plane other than \a self holds (by
+  * \a labels, per sample the index of its plane or kNoPatch; null: not counted) within \a band of
+  * the plane over its footprint. Both 0 when the plane cannot be judged. */
+LayerCounts
+countLayerSamples (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double band,
+                   const std::vector<std::uint32_t>* labels, std::uint32_t self);
+
+/** \brief Whether a plane of \a members samples, with \a counts from countLayerSamples, is a layer
+  * inside another plane's band (DetectorParameters::in_band_layer_check): that plane holds more
+  * than four times as many samples within the band over the footprint as the plane itself.
+  *
+  * A surface holds at least about as many samples as any other surface where both lie within its
+  * noise: faces of like density, one inside the other's band (two faces of a thin wall), give
+  * about 1. A plane grown among the clutter beside a denser one, whose spread makes a band wide
+  * enough to take in that plane, gives the density of that plane over the clutter's: a unit plane
+  * at σ 1 cm in a slab of 20 % outliers kept, scaled ×1000 or turned, a plane of 7,400 outliers
+  * whose band held 80,000 of the true plane's samples (10.9). */
+bool
+isInBandLayer (const LayerCounts& counts, std::size_t members);
 
 /** \brief Drop the noisy seeds' planes that are the boundary layers of a volume of samples
   * (departure, see DetectorParameters::volume_layer_check).
@@ -49,10 +77,15 @@ samplesBesideBand (const PointSet& points, const NeighborGraph& graph, const Pla
   * \param[in] num_threads OpenMP threads (0: OpenMP's default); the result does not depend on it
   * \param[in,out] patches the planes; those dropped are removed, order otherwise kept
   * \param[in] every_plane judge every plane, not only the noisy seeds'
+  * \param[in] first judge the planes from this index on (the others are kept)
+  * \param[in] in_band_layers with \a every_plane: also drop the layers inside another plane's band
+  * (isInBandLayer), counted against every plane in \a patches
+  * \param[in,out] in_band_dropped if not null: incremented by the planes dropped as such layers
   * \return planes dropped */
 std::size_t
 dropVolumeLayers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
-                  int num_threads, std::vector<PlanarPatch>& patches, bool every_plane = false);
+                  int num_threads, std::vector<PlanarPatch>& patches, bool every_plane = false,
+                  std::size_t first = 0, bool in_band_layers = false, std::size_t* in_band_dropped = nullptr);
 
 } // namespace rspd
 } // namespace pcl

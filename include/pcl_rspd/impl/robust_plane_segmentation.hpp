@@ -551,6 +551,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setFinalVolumeLayerCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setInBandLayerCheck (bool enable)
+{
+  params_.in_band_layer_check = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setTrimmedSeedGrowth (bool enable)
 {
   params_.trimmed_seed_growth = enable;
