@@ -75,6 +75,24 @@ struct NoisyFace
     graph = rspd_test::bruteForceGraph (set.points, 15);
   }
 };
+
+/** Two parallel faces \a apart (40 x 40 samples each over 2 x 2, σ 1 cm), each held by a plane
+  * whose band is 3 cm. */
+struct TwoFaces
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  NeighborGraph graph;
+
+  explicit TwoFaces (float apart)
+  {
+    const auto a = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 3);
+    const auto b = rspd_test::addRectangle (set, {0, 0, apart}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 4);
+    graph = rspd_test::bruteForceGraph (set.points, 15);
+    planes = {rspd_test::makePatch (a, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3),
+              rspd_test::makePatch (b, {1.0, 1.0, apart}, {0, 0, 1}, 0.03, 0.3)};
+  }
+};
 } // namespace
 
 TEST (VolumeLayers, TheEndOfAVolumeIsDenserBesideItsBandThanWithin)
@@ -120,12 +138,10 @@ TEST (VolumeLayers, FacesOfAThinWallAreKeptWhenEveryPlaneIsJudged)
 {
   // Two faces 5 cm apart (40 x 40 samples each over 2 x 2, σ 1 cm, bands 3 cm): each lies in the
   // layer beside the other's band, which holds about as many samples as the face, not twice.
-  PointSet set;
-  const auto a = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 3);
-  const auto b = rspd_test::addRectangle (set, {0, 0, 0.05f}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 4);
-  const NeighborGraph graph = rspd_test::bruteForceGraph (set.points, 15);
-  std::vector<PlanarPatch> planes = {rspd_test::makePatch (a, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3),
-                                     rspd_test::makePatch (b, {1.0, 1.0, 0.05}, {0, 0, 1}, 0.03, 0.3)};
+  TwoFaces f (0.05f);
+  const PointSet& set = f.set;
+  const NeighborGraph& graph = f.graph;
+  std::vector<PlanarPatch>& planes = f.planes;
   const std::size_t beside = samplesBesideBand (set, graph, planes[0], 0.03);
   EXPECT_GT (beside, planes[1].members.size () / 4); // the other face is there
   EXPECT_LT (beside, 2 * planes[0].members.size ());
@@ -211,12 +227,10 @@ TEST (InBandLayers, FacesOfLikeDensityInsideEachOthersBandAreKept)
 {
   // Two faces 2 cm apart at σ 1 cm, bands 3 cm: each lies inside the other's band and holds about
   // as many samples there as the other.
-  PointSet set;
-  const auto a = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 3);
-  const auto b = rspd_test::addRectangle (set, {0, 0, 0.02f}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 4);
-  const NeighborGraph graph = rspd_test::bruteForceGraph (set.points, 15);
-  std::vector<PlanarPatch> planes = {rspd_test::makePatch (a, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3),
-                                     rspd_test::makePatch (b, {1.0, 1.0, 0.02}, {0, 0, 1}, 0.03, 0.3)};
+  TwoFaces f (0.02f);
+  const PointSet& set = f.set;
+  const NeighborGraph& graph = f.graph;
+  std::vector<PlanarPatch>& planes = f.planes;
   const std::vector<std::uint32_t> labels = labelSamples (set.points.size (), planes);
   const LayerCounts c = countLayerSamples (set, graph, planes[0], 0.03, &labels, 0);
   EXPECT_GT (c.other_in_band, planes[1].members.size () / 2);
