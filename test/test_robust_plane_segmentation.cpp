@@ -936,3 +936,127 @@ TEST (RobustPlaneSegmentation, CurvedFoldRatioRefusesWhatIsNotPositive)
   seg.setCurvedFoldRatio (std::numeric_limits<double>::infinity ()); // every curved plane dropped
   EXPECT_EQ (seg.getCurvedFoldRatio (), std::numeric_limits<double>::infinity ());
 }
+
+TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
+{
+  // Each on/off switch of the API, flipped and flipped back, reads back what was set, and no other
+  // switch moves with it (a setter writing the wrong field would show here, not in a scene).
+  using Seg = pcl::RobustPlaneSegmentation<pcl::PointXYZ>;
+  struct Switch
+  {
+    const char* name;
+    void (Seg::*set) (bool);
+    bool (Seg::*get) () const;
+  };
+#define RSPD_SWITCH(n) Switch{#n, &Seg::set##n, &Seg::get##n}
+  const std::vector<Switch> switches{
+    RSPD_SWITCH (AlignNormalsBeforeMedian),
+    RSPD_SWITCH (SmallPlaneSeeding),
+    RSPD_SWITCH (LeftNormalRefit),
+    RSPD_SWITCH (LeftNormalNarrowing),
+    RSPD_SWITCH (ShiftedGrid),
+    RSPD_SWITCH (LeftNormalRefitOnGivenNormals),
+    RSPD_SWITCH (TrimmedSeedGrowth),
+    RSPD_SWITCH (GivenNormalCheck),
+    RSPD_SWITCH (DepthLevelDither),
+    RSPD_SWITCH (RimCellRetest),
+    RSPD_SWITCH (RimRetestUntilStable),
+    RSPD_SWITCH (LeftRimRetest),
+    RSPD_SWITCH (PositionPlanes),
+    RSPD_SWITCH (TailOdds),
+    RSPD_SWITCH (MemberGaps),
+    RSPD_SWITCH (HingeNormalTurn),
+    RSPD_SWITCH (FarMemberRelease),
+    RSPD_SWITCH (ReleasedPlaneSeeding),
+    RSPD_SWITCH (ReleasedLayerCheck),
+    RSPD_SWITCH (BentSideParentMnd),
+    RSPD_SWITCH (ConnectedParts),
+    RSPD_SWITCH (BentPlaneSplit),
+    RSPD_SWITCH (LayerMerge),
+    RSPD_SWITCH (StepSplit),
+    RSPD_SWITCH (AcrossStepCheck),
+    RSPD_SWITCH (EdgeSides),
+    RSPD_SWITCH (EdgeCorners),
+    RSPD_SWITCH (EdgeWedges),
+    RSPD_SWITCH (ThickCellJoin),
+    RSPD_SWITCH (StepSides),
+    RSPD_SWITCH (SupportCheck),
+    RSPD_SWITCH (FinalRefit),
+    RSPD_SWITCH (CoplanarMerge),
+    RSPD_SWITCH (DropOutlierSeeds),
+    RSPD_SWITCH (OutlierSeedRetest),
+    RSPD_SWITCH (SmallPlaneCompletion),
+    RSPD_SWITCH (VolumeLayerCheck),
+    RSPD_SWITCH (FinalVolumeLayerCheck),
+    RSPD_SWITCH (InBandLayerCheck),
+    RSPD_SWITCH (CurvedPlaneCheck),
+    RSPD_SWITCH (LateCurvedCheck),
+    RSPD_SWITCH (CurvedNormalTurn),
+    RSPD_SWITCH (CurvedFoldTwoSides),
+    RSPD_SWITCH (CurvedTubeCheck),
+    RSPD_SWITCH (CurvedSplitParts),
+    RSPD_SWITCH (SmallSeedMndFloor),
+    RSPD_SWITCH (BoundedReestimation),
+    RSPD_SWITCH (NoisyPlaneBentSplit),
+    RSPD_SWITCH (SmallPassThickCellJoin),
+    RSPD_SWITCH (NoisySeedGroups),
+    RSPD_SWITCH (NoisyLoneSeeds),
+    RSPD_SWITCH (NoisyGroupLadder),
+    RSPD_SWITCH (ThickCellsFollowNoisySeeds),
+    RSPD_SWITCH (BendNoiseTest),
+    RSPD_SWITCH (EdgeAwareNormals),
+  };
+#undef RSPD_SWITCH
+  Seg seg;
+  const auto state = [&] {
+    std::vector<bool> s;
+    for (const Switch& w : switches)
+      s.push_back ((seg.*w.get) ());
+    return s;
+  };
+  const std::vector<bool> defaults = state ();
+  for (std::size_t i = 0; i < switches.size (); ++i)
+  {
+    const Switch& w = switches[i];
+    (seg.*w.set) (!defaults[i]);
+    std::vector<bool> expected = defaults;
+    expected[i] = !defaults[i];
+    EXPECT_EQ (state (), expected) << w.name;
+    (seg.*w.set) (defaults[i]);
+    EXPECT_EQ (state (), defaults) << w.name;
+  }
+}
+
+TEST (RobustPlaneSegmentation, NoisyGroupRatioBendConfidenceAndNormalTurnRefuseBadValues)
+{
+  pcl::RobustPlaneSegmentation<pcl::PointXYZ> seg;
+  const double nan = std::numeric_limits<double>::quiet_NaN ();
+  const double inf = std::numeric_limits<double>::infinity ();
+  const double ratio = seg.getNoisySeedGroupRatio ();
+  for (const double bad : {0.5, -1.0, nan, inf})
+  {
+    seg.setNoisySeedGroupRatio (bad); // refused with PCL_ERROR
+    EXPECT_DOUBLE_EQ (seg.getNoisySeedGroupRatio (), ratio) << bad;
+  }
+  seg.setNoisySeedGroupRatio (3.0);
+  EXPECT_DOUBLE_EQ (seg.getNoisySeedGroupRatio (), 3.0);
+  const double confidence = seg.getGrownPlaneBendConfidence ();
+  for (const double bad : {0.0, 1.0, -0.5, nan})
+  {
+    seg.setGrownPlaneBendConfidence (bad);
+    EXPECT_DOUBLE_EQ (seg.getGrownPlaneBendConfidence (), confidence) << bad;
+  }
+  seg.setGrownPlaneBendConfidence (0.9);
+  EXPECT_DOUBLE_EQ (seg.getGrownPlaneBendConfidence (), 0.9);
+  const double turn = seg.getGrownPlaneNormalTurn ();
+  for (const double bad : {-0.1, nan, inf})
+  {
+    seg.setGrownPlaneNormalTurn (bad);
+    EXPECT_DOUBLE_EQ (seg.getGrownPlaneNormalTurn (), turn) << bad;
+  }
+  seg.setGrownPlaneNormalTurn (0.0); // judged on the positions' bend alone
+  EXPECT_DOUBLE_EQ (seg.getGrownPlaneNormalTurn (), 0.0);
+  EXPECT_EQ (seg.getNormalScale (), pcl::rspd::NormalScale::Automatic);
+  seg.setNormalScale (pcl::rspd::NormalScale::Fixed);
+  EXPECT_EQ (seg.getNormalScale (), pcl::rspd::NormalScale::Fixed);
+}

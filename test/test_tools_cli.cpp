@@ -417,3 +417,64 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_pca.pcd", {"--normal-fit", "pca"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_trimmed.pcd", {"--normal-fit=trimmed"}));
 }
+
+TEST (SegmentCli, EverySwitchAndValueIsAccepted)
+{
+  // Every departure switch and every value of each, in both spellings, on a small cloud of boxes
+  // (23 planes, so the summary's "... and N smaller planes" line is printed too): cheap enough to
+  // run under the sanitizers, where DepartureSwitches, which checks what each switch changes on
+  // 60,000-point scenes, is left out (scripts/sanitizer_skip.txt).
+  REQUIRE_TOOL (make, "rspd_make_scene");
+  REQUIRE_TOOL (segment, "rspd_segment");
+  rspd_test::TempDir dir;
+  ASSERT_EQ (runTool (make, {"boxes", dir.file ("b"), "-n", "6000"}).status, 0);
+  const std::vector<std::string> on_off{
+    "--coplanar-merge", "--left-retest", "--position-planes", "--tail-odds", "--member-gaps", "--release",
+    "--released-planes", "--edge-sides", "--edge-corners", "--edge-wedges", "--thick-join", "--small-thick-join",
+    "--noisy-groups", "--noisy-lone", "--noisy-ladder", "--thick-follow", "--step-sides", "--support",
+    "--final-refit", "--connected-parts", "--bent-split", "--layer-merge", "--step-split", "--across-steps",
+    "--bent-side-mnd", "--edge-normals", "--shifted-grid", "--bounded-reestimate", "--noisy-bent-split",
+    "--volume-layers", "--final-volume-layers", "--in-band-layers", "--small-completion", "--curved-check",
+    "--late-curved", "--curved-turn", "--curved-fold-sides", "--tube-check", "--curved-parts", "--hinge-normals"};
+  // Options of more than two values: each value once, over the runs below.
+  const std::vector<std::pair<std::string, std::vector<std::string>>> choices{
+    {"--normal-scale", {"fixed", "adaptive", "auto"}},
+    {"--rim-retest", {"on", "once", "off"}},
+    {"--left-normals", {"auto", "trimmed", "pca"}},
+    {"--outlier-seeds", {"retest", "drop", "keep"}},
+    {"--assign", {"edges", "tails", "all", "none"}},
+    {"--given-normals", {"check", "keep"}},
+    {"--depth-levels", {"dither", "keep"}},
+    {"--normal-fit", {"pca", "trimmed"}},
+    {"--frame", {"planes", "axes"}},
+    {"--bend-test", {"noise", "share"}}};
+  for (int run = 0; run < 4; ++run)
+  {
+    std::vector<std::string> args{dir.file ("b.pcd"), "-o", dir.file ("out.pcd"), "-v"};
+    if (run < 2)
+      for (const std::string& s : on_off) // "--x on", then "--x=off"
+        if (run == 0)
+          args.insert (args.end (), {s, "on"});
+        else
+          args.push_back (s + "=off");
+    for (const auto& [name, values] : choices)
+      args.push_back (name + "=" + values[std::min<std::size_t> (run, values.size () - 1)]);
+    const auto r = runTool (segment, args);
+    EXPECT_EQ (r.status, 0) << "run " << run << ": " << r.err;
+    if (run == 0)
+    {
+      EXPECT_NE (r.err.find ("edge-aware normals:"), std::string::npos) << r.err;
+      EXPECT_NE (r.out.find ("smaller planes"), std::string::npos) << r.out;
+    }
+  }
+  // A value no switch takes is a usage error (exit 2) that names the switch (on/off switches share
+  // one parser: two of them are enough).
+  for (const std::string& s : {on_off.front (), on_off.back ()})
+  {
+    const auto r = runTool (segment, {dir.file ("b.pcd"), s, "maybe"});
+    EXPECT_EQ (r.status, 2) << s;
+    EXPECT_NE (r.err.find (s), std::string::npos) << s << ": " << r.err;
+  }
+  for (const auto& choice : choices)
+    EXPECT_EQ (runTool (segment, {dir.file ("b.pcd"), choice.first, "maybe"}).status, 2) << choice.first;
+}
