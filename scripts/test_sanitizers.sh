@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it after
-# scripts/test.sh). Builds in ./build-asan with -DPCL_RSPD_SANITIZE=ON (library, tools and tests
+# The test suite under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it after
+# scripts/test.sh), but for the costly tests of scripts/sanitizer_skip.txt (see below). Builds in ./build-asan with -DPCL_RSPD_SANITIZE=ON (library, tools and tests
 # instrumented; Debian's PCL is not) and runs ctest there. Any memory error, leak or undefined
 # behaviour aborts the process that hit it, so the test fails. Extra arguments go to ctest.
 set -euo pipefail
@@ -18,11 +18,26 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # threads each. Code paths with more threads stay covered: the determinism and thread tests ask for
 # two threads explicitly (setNumberOfThreads, --threads, OMP_NUM_THREADS in a tool's environment),
 # which this does not change.
+# Jobs for make and ctest: counted before that export, since nproc honours OMP_NUM_THREADS (with it
+# set to 1 first, CI built and tested this step one job at a time and ran past its 90 minutes).
+jobs=$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)
 export OMP_NUM_THREADS=1
 
 # No benchmarks here: their smoke test runs in the plain build (scripts/test.sh).
 cmake -S . -B build-asan -DPCL_RSPD_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPCL_RSPD_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build build-asan -j"$(nproc)"
+cmake --build build-asan -j"$jobs"
+
+# Which tests: all of them with PCL_RSPD_SANITIZE_ALL=1; by default every test except those listed
+# in scripts/sanitizer_skip.txt. Those are end-to-end tests that take 10 s or more each under the
+# sanitizers and execute no line of the library or the tools that the tests run here do not execute
+# too (gcov lines, measured by scripts/sanitizer_subset.py, which writes that file). The whole suite
+# under the sanitizers summed about 4,000 test-seconds on this machine (10M-point test not counted).
+# A test added later runs here until that file is made again.
+skip=()
+if [[ "${PCL_RSPD_SANITIZE_ALL:-0}" != 1 ]]; then
+  names=$(grep -v '^#' scripts/sanitizer_skip.txt | sed 's/[.]/[.]/g' | paste -sd'|')
+  [[ -n "$names" ]] && skip=(-E "^(${names})\$")
+fi
 
 # install_and_consume builds a consumer against the installed (instrumented) libpcl_rspd: the
 # consumer must link the sanitizer runtimes too, or ASan refuses to start ("ASan runtime does not
@@ -30,4 +45,4 @@ cmake --build build-asan -j"$(nproc)"
 # configures the consumer's fresh build directory; nothing else is configured during ctest.
 sanitize="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
 CXXFLAGS="$sanitize" LDFLAGS="$sanitize" \
-  ctest --test-dir build-asan --output-on-failure -j"$(nproc)" "$@"
+  ctest --test-dir build-asan --output-on-failure -j"$jobs" "${skip[@]}" "$@"
