@@ -47,7 +47,9 @@ gcnos = glob.glob(os.path.join(build, "**", "*.gcno"), recursive=True)
 
 
 def run(prefix, args):
+    # One OpenMP thread per test unless told otherwise: the tests run --jobs at a time.
     env = dict(os.environ, GCOV_PREFIX=prefix, GCOV_PREFIX_STRIP="0")
+    env.setdefault("OMP_NUM_THREADS", "1")
     r = subprocess.run(["ctest", "--test-dir", build, "--output-on-failure"] + args, env=env,
                        capture_output=True, text=True)
     if r.returncode != 0:
