@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The test suite under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it after
-# scripts/test.sh), but for the costly tests of scripts/sanitizer_skip.txt (see below). Builds in ./build-asan with -DPCL_RSPD_SANITIZE=ON (library, tools and tests
-# instrumented; Debian's PCL is not) and runs ctest there. Any memory error, leak or undefined
+# scripts/test.sh), but for the costly tests of scripts/sanitizer_skip.txt (see below). Builds in
+# ./build-asan with -DPCL_RSPD_SANITIZE=ON (library, tools and tests instrumented; Debian's PCL is
+# not) and runs ctest there. Any memory error, leak or undefined
 # behaviour aborts the process that hit it, so the test fails. Extra arguments go to ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,9 +16,10 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # One OpenMP thread by default: ctest runs two tests at once on these 2 cores, and two instrumented
 # processes of one thread each got through a pair of scenario tests in 54 s against 61 s with two
-# threads each. Code paths with more threads stay covered: the determinism and thread tests ask for
-# two threads explicitly (setNumberOfThreads, --threads, OMP_NUM_THREADS in a tool's environment),
-# which this does not change.
+# threads each. Code paths with more threads stay covered: the thread-count tests that run here ask
+# for two threads explicitly (setNumberOfThreads in PatchMerge/AcrossSteps/...DoesNotDependOn...
+# ThreadCount, OMP_NUM_THREADS in rspd_segment's environment in
+# SegmentCli.OutputIsByteIdenticalForOneAndTwoThreads), which this does not change.
 # Jobs for make and ctest: counted before that export, since nproc honours OMP_NUM_THREADS (with it
 # set to 1 first, CI built and tested this step one job at a time and ran past its 90 minutes).
 jobs=$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)
