@@ -27,7 +27,7 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" \
   -DPCL_RSPD_BUILD_FUZZERS=ON -DPCL_RSPD_BUILD_TOOLS=OFF -DPCL_RSPD_BUILD_TESTS=OFF >/dev/null
-jobs=$(nproc)
+jobs=$(bash scripts/jobs.sh)
 [ "$jobs" -le 2 ] || jobs=2
 cmake --build build-fuzz -j"$jobs" --target "${targets[@]/#/fuzz_}"
 

@@ -16,7 +16,7 @@ test runs alone, under its own GCOV_PREFIX, so that its lines are its own; the c
 together. Prints the lines each part covers and writes the costly tests not chosen, one per line, to
 --out (scripts/sanitizer_skip.txt, which scripts/test_sanitizers.sh leaves out). Run it again when
 the code changes: a line only a skipped test reaches is a line the sanitizers no longer see."""
-import argparse, glob, gzip, json, os, re, shutil, subprocess, sys, tempfile
+import argparse, glob, json, os, re, shutil, subprocess, sys, tempfile
 from concurrent.futures import ThreadPoolExecutor
 
 ap = argparse.ArgumentParser()
@@ -29,14 +29,11 @@ ap.add_argument("--save", help="also write the lines each costly test adds, as J
 a = ap.parse_args()
 build = os.path.abspath(a.build)
 source = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
-if a.times.endswith(".json"):
-    times = json.load(open(a.times))
-else:  # ctest's Testing/Temporary/CTestCostData.txt: "name runs seconds" lines, then "---"
-    times = {}
-    for row in open(a.times):
-        f = row.split()
-        if len(f) == 3 and f[0] != "---" and not f[0].startswith("#"):
-            times[f[0]] = float(f[2])
+times = {}  # CTestCostData.txt: "name runs seconds" lines, then "---" and the failed tests' names
+for row in open(a.times):
+    f = row.split()
+    if len(f) == 3 and not f[0].startswith("#"):
+        times[f[0]] = float(f[2])
 
 names = re.findall(r"^\s*Test\s+#\d+: (\S+)$",
                    subprocess.run(["ctest", "--test-dir", build, "-N"], capture_output=True,

@@ -4,4 +4,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j"$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)" "$@"
+ctest --test-dir build --output-on-failure -j"$(bash scripts/jobs.sh)" "$@"

@@ -2,8 +2,8 @@
 # The test suite under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it after
 # scripts/test.sh), but for the costly tests of scripts/sanitizer_skip.txt (see below). Builds in
 # ./build-asan with -DPCL_RSPD_SANITIZE=ON (library, tools and tests instrumented; Debian's PCL is
-# not) and runs ctest there. Any memory error, leak or undefined
-# behaviour aborts the process that hit it, so the test fails. Extra arguments go to ctest.
+# not) and runs ctest there. Any memory error, leak or undefined behaviour aborts the process that
+# hit it, so the test fails. Extra arguments go to ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh   # g++ brings the sanitizer runtimes (libasan8, libubsan1)
@@ -20,9 +20,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # for two threads explicitly (setNumberOfThreads in PatchMerge/AcrossSteps/...DoesNotDependOn...
 # ThreadCount, OMP_NUM_THREADS in rspd_segment's environment in
 # SegmentCli.OutputIsByteIdenticalForOneAndTwoThreads), which this does not change.
-# Jobs for make and ctest: counted before that export, since nproc honours OMP_NUM_THREADS (with it
-# set to 1 first, CI built and tested this step one job at a time and ran past its 90 minutes).
-jobs=$(env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc)
+jobs=$(bash scripts/jobs.sh)   # make's and ctest's, whatever OMP_NUM_THREADS says
 export OMP_NUM_THREADS=1
 
 # No benchmarks here: their smoke test runs in the plain build (scripts/test.sh).
