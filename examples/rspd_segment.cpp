@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -85,6 +85,9 @@ const char* const kHelp =
     "  --tail-odds on|off  the last assignment takes a plane's noise tail (3-4 robust sigma) only as\n"
     "                   far as its noise is likelier than the clutter measured beside it (default\n"
     "                   on; off = every plane's 4 sigma tail)\n"
+    "  --surrounding-clutter on|off  the tail odds also count the clutter around a plane over\n"
+    "                   its footprint (both sides), the tail may end below 3 robust sigma, and\n"
+    "                   members beyond it leave (default on; off = the neighbourhood count alone)\n"
     "  --member-gaps on|off  the last assignment gives a point to a plane only where it lies among\n"
     "                   the plane's members (its gap to the nearest within 6 times theirs), not\n"
     "                   through the clutter beside a rim (default on; off = by distance, normal\n"
@@ -247,6 +250,7 @@ struct Options
   bool position_planes = true;
   bool tail_odds = true;
   bool member_gaps = true;
+  bool surrounding_clutter = true;
   bool hinge_normals = true;
   bool release = true;
   bool released_planes = true;
@@ -387,6 +391,8 @@ parseArguments (int argc, char** argv)
       o.tail_odds = option.choice ("on", "off");
     else if (arg == "--member-gaps")
       o.member_gaps = option.choice ("on", "off");
+    else if (arg == "--surrounding-clutter")
+      o.surrounding_clutter = option.choice ("on", "off");
     else if (arg == "--release")
       o.release = option.choice ("on", "off");
     else if (arg == "--released-planes")
@@ -643,6 +649,7 @@ run (const Options& o)
   seg.setPositionPlanes (o.position_planes);
   seg.setTailOdds (o.tail_odds);
   seg.setMemberGaps (o.member_gaps);
+  seg.setSurroundingClutter (o.surrounding_clutter);
   seg.setHingeNormalTurn (o.hinge_normals);
   seg.setFarMemberRelease (o.release);
   seg.setReleasedPlaneSeeding (o.released_planes);

@@ -225,12 +225,14 @@ constexpr double kInvSqrtTwoPi = 0.3989422804014327;
   * are its members, their normals pass its MND, as the Tails rule asks) in the shell
   * kClutterShellFrom-kClutterShellTo σ; the noise's is N · 2φ(|d| / σ) for N members; they meet at
   * x σ, x = sqrt (2 ln (2 N φ(0) · width / count)). The limit stays within [kBandSigmas, kTailSigmas]
-  * σ: a clean plane keeps the 4 σ tail, and a plane in dense clutter its 3 σ band. Footprint and
-  * density cancel, so nothing here has a unit. */
+  * σ: a clean plane keeps the 4 σ tail, and a plane in dense clutter its 3 σ band. With
+  * \a surrounding (DetectorParameters::surrounding_clutter) the count is at least the clutter
+  * around the plane over its footprint (clutterBesidePlane), and the limit may fall below 3 σ, to
+  * MDP. Footprint and density cancel, so nothing here has a unit. */
 void
 boundTailsByClutter (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
                      const std::vector<double>& median, const std::vector<std::uint32_t>& labels,
-                     std::vector<double>& tail_limit)
+                     bool surrounding, int num_threads, std::vector<double>& tail_limit)
 {
   std::vector<std::size_t> shell (patches.size (), 0);
   for (std::uint32_t i = 0; i < labels.size (); ++i)
@@ -248,6 +250,28 @@ boundTailsByClutter (const PointSet& points, const NeighborGraph& graph, const s
         std::abs (points.normals[i].cast<double> ().dot (patch.normal)) >= patch.cos_mnd)
       ++shell[first];
   }
+  if (surrounding)
+  {
+    // Surrounding clutter (DetectorParameters::surrounding_clutter): where the clutter is dense, its
+    // samples have clutter around them and the shell above misses them.
+    std::vector<std::uint32_t> open;
+    for (std::uint32_t i = 0; i < labels.size (); ++i)
+      if (labels[i] == kNoPatch)
+        open.push_back (i);
+    const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (patches.size ());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads (num_threads))
+    for (std::ptrdiff_t l = 0; l < count; ++l)
+      if (!std::isnan (median[l]))
+      {
+        const double sigma = kMadScale * median[l];
+        shell[l] = std::max (shell[l], clutterBesidePlane (points, graph, patches[l], kClutterShellFrom * sigma,
+                                                           kClutterShellTo * sigma, labels, open,
+                                                           static_cast<std::uint32_t> (l)));
+      }
+  }
+  // Without surrounding clutter a plane in dense clutter keeps its 3 σ band; with it, the tail ends
+  // where the clutter's density meets the noise's, MDP its floor.
+  const double lowest = surrounding ? 0.0 : kBandSigmas;
   for (std::size_t l = 0; l < patches.size (); ++l)
   {
     if (shell[l] == 0 || std::isnan (median[l]))
@@ -257,7 +281,7 @@ boundTailsByClutter (const PointSet& points, const NeighborGraph& graph, const s
     const double noise = 2.0 * kInvSqrtTwoPi * static_cast<double> (patches[l].members.size ());
     const double clutter = static_cast<double> (shell[l]) / (kClutterShellTo - kClutterShellFrom);
     const double x = noise > clutter ? std::sqrt (2.0 * std::log (noise / clutter)) : 0.0;
-    const double bound = std::max (patches[l].mdp, std::clamp (x, kBandSigmas, kTailSigmas) * sigma);
+    const double bound = std::max (patches[l].mdp, std::clamp (x, lowest, kTailSigmas) * sigma);
     tail_limit[l] = std::min (tail_limit[l], bound);
   }
 }
@@ -298,7 +322,26 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   if (tails && (params.tail_odds || params.member_gaps))
   {
     std::vector<double> bounded = tail_limit;
-    boundTailsByClutter (points, graph, patches, median, labels, bounded);
+    const bool surrounding = params.tail_odds && params.surrounding_clutter;
+    boundTailsByClutter (points, graph, patches, median, labels, surrounding, params.num_threads, bounded);
+    if (surrounding)
+      // Surrounding clutter: growth and the far-member release admitted members out to MDP or 3 σ
+      // whatever the clutter; beyond the tail's end they are likelier clutter than the plane's.
+      for (std::size_t l = 0; l < patches.size (); ++l)
+      {
+        if (!(bounded[l] < tail_limit[l]))
+          continue;
+        PlanarPatch& plane = patches[l];
+        std::size_t kept = 0;
+        for (const auto m : plane.members)
+          if (std::abs ((points.points[m].cast<double> () - plane.center).dot (plane.normal)) <= bounded[l])
+            plane.members[kept++] = m;
+          else
+            labels[m] = kNoPatch;
+        plane.members.resize (kept);
+        if (kept > 0)
+          plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
+      }
     if (params.member_gaps)
       for (std::size_t l = 0; l < patches.size (); ++l)
         in_clutter.push_back (bounded[l] < tail_limit[l]);

@@ -154,6 +154,33 @@ countLayerSamples (const PointSet& points, const NeighborGraph& graph, const Pla
 }
 
 std::size_t
+clutterBesidePlane (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double from,
+                    double to, const std::vector<std::uint32_t>& labels, const std::vector<std::uint32_t>& open,
+                    std::uint32_t self)
+{
+  Footprint footprint;
+  if (!(from >= 0.0 && from < to) || !std::isfinite (to) || labels.size () != points.size () ||
+      !footprint.build (points, graph, plane))
+    return 0;
+  std::size_t above = 0, below = 0;
+  for (const auto i : open)
+  {
+    const Eigen::Vector3d p = points.points[i].cast<double> ();
+    const double d = footprint.distance (p);
+    const double ad = std::abs (d);
+    if (!(ad >= from && ad < to) || !footprint.covers (p))
+      continue;
+    bool beside_other = false;
+    graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+      beside_other = beside_other || (labels[n] != kNoPatch && labels[n] != self);
+    });
+    if (!beside_other)
+      ++(d > 0.0 ? above : below);
+  }
+  return 2 * std::min (above, below);
+}
+
+std::size_t
 samplesBesideBand (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double band)
 {
   return countLayerSamples (points, graph, plane, band, nullptr, kNoPatch).beside;

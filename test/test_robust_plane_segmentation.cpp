@@ -964,6 +964,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (LeftRimRetest),
     RSPD_SWITCH (PositionPlanes),
     RSPD_SWITCH (TailOdds),
+    RSPD_SWITCH (SurroundingClutter),
     RSPD_SWITCH (MemberGaps),
     RSPD_SWITCH (HingeNormalTurn),
     RSPD_SWITCH (FarMemberRelease),

@@ -236,13 +236,15 @@ TEST (Scenario, WindowsRecessedWithinTheFacadesNoiseTakeTheirSamplesBack)
   // The facade at sigma = 5 cm: the windows lie 20 cm behind the wall, 4 sigma, so the two noise
   // bands (3 sigma each) overlap, and the wall, grown first, kept up to 30 % of some windows'
   // samples, scattered over them, and gave others its samples along their rims. Measured: F1 0.909,
-  // 14 of 16 planes, 2 false planes without the step-side rule; 0.982 and 16 with it.
+  // 14 of 16 planes, 2 false planes without the step-side rule; 0.982 and 16 with it (0.932, 15
+  // planes, 1 false, against 0.988 and 16 since the surrounding-clutter tail).
   pcl::rspd::SceneOptions o;
   o.noise = 0.05;
   const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setStepSides (false); };
   const Detection without = detectScene ("facade", o, true, pcl::rspd::NormalScale::Automatic, off);
   const Detection with = detectScene ("facade", o);
-  EXPECT_LT (without.score.f1, 0.93);
+  EXPECT_LT (without.score.f1, with.score.f1 - 0.03);
+  EXPECT_LT (without.score.found, 16);
   EXPECT_GE (with.score.f1, 0.97);
   EXPECT_EQ (with.score.found, 16);
   EXPECT_EQ (with.score.false_planes, 0);
@@ -538,6 +540,32 @@ TEST (Scenario, PlaneWrappedInASlabOfOutliersHasNoPlanesOfOutliers)
   EXPECT_GT (without.score.false_planes, 0);
   EXPECT_LT (without.score.f1, 0.85);
   EXPECT_EQ (without.stats.final_volume_layers, 0u);
+}
+
+TEST (Scenario, PlaneInASlabOfOutliersEndsItsTailWhereTheOutliersOutnumberItsNoise)
+{
+  // The unit plane at σ 1 cm in a slab of 20 % outliers (seed 3): beyond about 2.5 σ the outliers
+  // outnumber the plane's own samples, but the clutter shell of the tail odds, which counts only
+  // samples whose neighbours are mostly the plane's, undercounted them, and the plane kept the
+  // outliers growth gave it out to 3-3.5 σ: F1 0.915 (measured with
+  // rspd_segment --surrounding-clutter off). With the clutter counted around the plane over its
+  // footprint, the tail ends near 2.5 σ and the members beyond it leave: 0.940.
+  pcl::rspd::SceneOptions o;
+  o.num_points = 100000;
+  o.noise = 0.01;
+  o.outlier_ratio = 0.2;
+  o.seed = 3;
+  const Detection with = detectScene ("plane", o);
+  const Detection without = detectScene ("plane", o, true, pcl::rspd::NormalScale::Automatic,
+                                         [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                                           EXPECT_TRUE (s.getSurroundingClutter ());
+                                           s.setSurroundingClutter (false);
+                                           EXPECT_FALSE (s.getSurroundingClutter ());
+                                         });
+  EXPECT_EQ (with.score.found, 1);
+  EXPECT_EQ (with.score.false_planes, 0);
+  EXPECT_GT (with.score.f1, 0.935);
+  EXPECT_LT (without.score.f1, 0.925);
 }
 
 TEST (Scenario, PlaneInAThinSlabOfOutliersScaledHasNoLayerOfOutliersInsideItsBand)
@@ -1720,9 +1748,10 @@ TEST (Scenario, TurnedSceneGivesTheSamePlanes)
   // In the dominant-plane frame (the default) the octree's cells and the medians of Eqs. 3-4 turn
   // with the cloud, so three random rotations of the room and of the staircase label their points
   // as the original does: scored against the original's truth and positions, F1 within 0.005.
-  // In the cloud's own axes (the paper), a rotated facade scores lower for some rotations (0.989
-  // against 0.994 here; it also lost planes before the small-plane pass took seeds up to the
-  // noisiest plane's MND).
+  // In the cloud's own axes (the paper), a rotated facade scores lower for some rotations (0.799
+  // against 0.995 at rotation seed 1; at seed 3 it was 0.989 against 0.994 until the surrounding-
+  // clutter tail made the two agree, 0.9955 each; it also lost planes before the small-plane pass
+  // took seeds up to the noisiest plane's MND).
   for (const char* name : {"room", "staircase"})
   {
     const pcl::rspd::Scene scene = pcl::rspd::makeScene (name);
@@ -1745,7 +1774,7 @@ TEST (Scenario, TurnedSceneGivesTheSamePlanes)
   pcl::PointCloud<pcl::PointXYZ> turned = facade.cloud;
   pcl::rspd::SceneOptions o;
   o.random_rotation = true;
-  o.seed = 3;
+  o.seed = 1;
   pcl::rspd::transformCloud (turned, o);
   const auto axes = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setDetectionFrame (pcl::rspd::DetectionFrame::InputAxes);

@@ -429,7 +429,7 @@ TEST (SegmentCli, EverySwitchAndValueIsAccepted)
   rspd_test::TempDir dir;
   ASSERT_EQ (runTool (make, {"boxes", dir.file ("b"), "-n", "6000"}).status, 0);
   const std::vector<std::string> on_off{
-    "--coplanar-merge", "--left-retest", "--position-planes", "--tail-odds", "--member-gaps", "--release",
+    "--coplanar-merge", "--left-retest", "--position-planes", "--tail-odds", "--surrounding-clutter", "--member-gaps", "--release",
     "--released-planes", "--edge-sides", "--edge-corners", "--edge-wedges", "--thick-join", "--small-thick-join",
     "--noisy-groups", "--noisy-lone", "--noisy-ladder", "--thick-follow", "--step-sides", "--support",
     "--final-refit", "--connected-parts", "--bent-split", "--layer-merge", "--step-split", "--across-steps",

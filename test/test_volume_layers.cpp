@@ -1,6 +1,6 @@
 /*
- * Tests of the volume-layer check (samplesBesideBand, dropVolumeLayers) and of the in-band layers
- * (countLayerSamples, isInBandLayer).
+ * Tests of the volume-layer check (samplesBesideBand, dropVolumeLayers), of the in-band layers
+ * (countLayerSamples, isInBandLayer) and of the surrounding clutter's count (clutterBesidePlane).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
@@ -276,4 +276,78 @@ TEST (VolumeLayers, NothingToJudgeGivesZero)
   EXPECT_EQ (samplesBesideBand (v.set, v.graph, empty, 0.1), 0u);
   std::vector<PlanarPatch> none;
   EXPECT_EQ (dropVolumeLayers (v.set, v.graph, {}, 1, none), 0u);
+}
+
+namespace
+{
+/** A face (z = 0 over 2 x 2, 40 x 40 samples, σ 1 cm) held by plane 0, and 4,000 samples of clutter
+  * over it, between z = -0.5 and 0.5 (or 0 and 0.5 with \a one_side), that no plane holds. */
+struct FaceInClutter
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<std::uint32_t> labels, open;
+  NeighborGraph graph;
+
+  explicit FaceInClutter (bool one_side)
+  {
+    const auto face = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 40, 40, 0.01f, 3);
+    std::mt19937 rng (9);
+    std::uniform_real_distribution<float> u (0.0f, 1.0f);
+    for (int i = 0; i < 4000; ++i)
+    {
+      open.push_back (static_cast<std::uint32_t> (set.points.size ()));
+      const float z = one_side ? 0.5f * u (rng) : u (rng) - 0.5f;
+      set.points.emplace_back (2.0f * u (rng), 2.0f * u (rng), z);
+      set.normals.push_back (Eigen::Vector3f::UnitZ ());
+      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
+    }
+    planes = {rspd_test::makePatch (face, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3)};
+    labels = labelSamples (set.size (), planes);
+    graph = rspd_test::bruteForceGraph (set.points, 15);
+  }
+};
+} // namespace
+
+TEST (SurroundingClutter, ClutterOnBothSidesIsCountedOnOneSideItIsNot)
+{
+  // Between 4.5 and 6 cm from the face, each side's layer holds about 4,000 · 0.015 = 60 samples of
+  // the clutter: twice the lesser side, about 120. With the clutter above the face only, the side
+  // below is empty: what lies on one side of a plane is other structure, no clutter.
+  FaceInClutter both (false);
+  const std::size_t count = clutterBesidePlane (both.set, both.graph, both.planes[0], 0.045, 0.06, both.labels, both.open, 0);
+  EXPECT_GT (count, 70u);
+  EXPECT_LT (count, 180u);
+  FaceInClutter above (true);
+  EXPECT_EQ (clutterBesidePlane (above.set, above.graph, above.planes[0], 0.045, 0.06, above.labels, above.open, 0), 0u);
+}
+
+TEST (SurroundingClutter, SamplesNextToAnotherPlaneAreItsEdgeNotClutter)
+{
+  FaceInClutter f (false);
+  std::vector<std::uint32_t> labels = f.labels;
+  // Every sample of the clutter held by a plane 1 but those offered: each offered one then has a
+  // neighbour in another plane.
+  std::vector<char> offered (f.set.size (), 0);
+  std::vector<std::uint32_t> open;
+  for (const auto i : f.open)
+  {
+    const double z = std::abs (f.set.points[i].z ());
+    if (z >= 0.045 && z < 0.06)
+    {
+      open.push_back (i);
+      offered[i] = 1;
+    }
+  }
+  for (const auto i : f.open)
+    if (!offered[i])
+      labels[i] = 1;
+  EXPECT_GT (clutterBesidePlane (f.set, f.graph, f.planes[0], 0.045, 0.06, f.labels, open, 0), 70u);
+  EXPECT_EQ (clutterBesidePlane (f.set, f.graph, f.planes[0], 0.045, 0.06, labels, open, 0), 0u);
+  // Nothing to judge: no members, an empty shell, labels of another size.
+  PlanarPatch empty = f.planes[0];
+  empty.members.clear ();
+  EXPECT_EQ (clutterBesidePlane (f.set, f.graph, empty, 0.045, 0.06, f.labels, f.open, 0), 0u);
+  EXPECT_EQ (clutterBesidePlane (f.set, f.graph, f.planes[0], 0.06, 0.045, f.labels, f.open, 0), 0u);
+  EXPECT_EQ (clutterBesidePlane (f.set, f.graph, f.planes[0], 0.045, 0.06, {}, f.open, 0), 0u);
 }

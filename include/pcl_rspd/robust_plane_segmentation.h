@@ -176,6 +176,9 @@ struct RobustPlane
   *    inside one plane join it if their normal passes its MND and they lie within 4 robust standard
   *    deviations of it (the noise tail MDP cuts off); the first kind reaches no farther than 3
   *    neighbourhood radii from the plane's grown members;
+  *  - surrounding clutter (setSurroundingClutter(false) for the tail odds' neighbourhood count
+  *    alone): the clutter around a plane is counted over its footprint too, both sides, and the
+  *    members beyond the tail's end (below 3 σ in dense clutter, MDP the floor) leave it;
   *  - member gaps (setMemberGaps(false) for the last assignment above alone): beside a plane in
   *    clutter, a sample joins it only where it lies among its members, its in-plane gap to the
   *    nearest within 6 times the gaps of the supported members beside it (a joiner vouches with
@@ -510,6 +513,17 @@ public:
   /** \brief Whether each plane's tail ends where the clutter beside it outweighs its noise. */
   bool
   getTailOdds () const { return params_.tail_odds; }
+
+  /** \brief Surrounding clutter (default true; false = the tail odds' neighbourhood shell alone):
+    * with the tail odds, the clutter beside a plane is also counted over its footprint, on both
+    * sides (twice the lesser), the tail ends where the clutter outweighs the plane's noise even
+    * below 3 σ (MDP the floor), and the members beyond it leave the plane before the last
+    * assignment. See pcl::rspd::DetectorParameters::surrounding_clutter. */
+  void
+  setSurroundingClutter (bool enable);
+  /** \brief Whether the tail odds count the clutter around each plane over its footprint. */
+  bool
+  getSurroundingClutter () const { return params_.surrounding_clutter; }
 
   /** \brief Member gaps (default true; false = the last assignment by distance, normal and
     * neighbours alone): the last assignment gives a sample to a plane only where it lies among the

@@ -45,6 +45,21 @@ LayerCounts
 countLayerSamples (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double band,
                    const std::vector<std::uint32_t>* labels, std::uint32_t self);
 
+/** \brief Clutter surrounding a plane (DetectorParameters::surrounding_clutter): of the samples
+  * \a open (those no plane holds), those at a distance in [\a from, \a to) from the plane whose
+  * projection falls in its footprint (as samplesBesideBand) and none of whose graph neighbours a
+  * plane other than \a self holds, counted on each side; twice the smaller count is returned.
+  *
+  * The lesser side: a volume of clutter around a plane (a slab of outliers, a scanner's scattered
+  * returns) lies on both sides, while what lies on one side only is other structure, a face no
+  * plane found, the samples beside an edge, and is no clutter. Samples next to another plane are
+  * that plane's edge. 0 when the plane cannot be judged.
+  * \param[in] labels per sample, the index of its plane or kNoPatch */
+std::size_t
+clutterBesidePlane (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double from,
+                    double to, const std::vector<std::uint32_t>& labels, const std::vector<std::uint32_t>& open,
+                    std::uint32_t self);
+
 /** \brief Whether a plane of \a members samples, with \a counts from countLayerSamples, is a layer
   * inside another plane's band (DetectorParameters::in_band_layer_check): that plane holds more
   * than four times as many samples within the band over the footprint as the plane itself.

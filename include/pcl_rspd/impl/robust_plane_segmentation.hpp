@@ -362,6 +362,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setTailOdds (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSurroundingClutter (bool enable)
+{
+  params_.surrounding_clutter = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setMemberGaps (bool enable)
 {
   params_.member_gaps = enable;
