@@ -32,7 +32,7 @@ using rspd_tools::UsageError;
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
     " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
-    " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
+    " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
     "Detect every plane of a point cloud (RSPD, Araujo & Oliveira 2020).\n"
@@ -179,6 +179,9 @@ const char* const kHelp =
     "  --in-band-layers on|off  with them, also drop a final plane within whose noise band\n"
     "                   another plane holds four times its points: clutter beside a denser plane,\n"
     "                   not a surface; the layer merge does not join it (default on; off = kept)\n"
+    "  --flat-layers on|off  with them, also drop a final plane when the layer beside its band\n"
+    "                   holds more points than it and the next layer as many again: a layer of\n"
+    "                   a volume of clutter (default on; off = the ratio rule alone)\n"
     "  --bounded-reestimate on|off  a plane keeps its last estimate when a re-estimate's\n"
     "                   normal spread fails the paper's 60 degree test (default on; off = the\n"
     "                   paper: every re-estimate taken)\n"
@@ -285,6 +288,7 @@ struct Options
   bool volume_layers = true;
   bool final_volume_layers = true;
   bool in_band_layers = true;
+  bool flat_layers = true;
   bool small_completion = true;
   bool bounded_reestimate = true;
   bool noisy_bent_split = false;
@@ -471,6 +475,8 @@ parseArguments (int argc, char** argv)
       o.final_volume_layers = option.choice ("on", "off");
     else if (arg == "--in-band-layers")
       o.in_band_layers = option.choice ("on", "off");
+    else if (arg == "--flat-layers")
+      o.flat_layers = option.choice ("on", "off");
     else if (arg == "--small-completion")
       o.small_completion = option.choice ("on", "off");
     else if (arg == "--curved-check")
@@ -687,6 +693,7 @@ run (const Options& o)
   seg.setVolumeLayerCheck (o.volume_layers);
   seg.setFinalVolumeLayerCheck (o.final_volume_layers);
   seg.setInBandLayerCheck (o.in_band_layers);
+  seg.setFlatLayers (o.flat_layers);
   seg.setSmallPlaneCompletion (o.small_completion);
   seg.setBoundedReestimation (o.bounded_reestimate);
   seg.setNoisyPlaneBentSplit (o.noisy_bent_split);

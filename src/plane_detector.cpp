@@ -1208,7 +1208,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // Final volume layers (departure, see DetectorParameters::final_volume_layer_check): on the
     // refitted planes, before the last assignment gives their tails to the planes that stay.
     st.final_volume_layers = dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads,
-                                               patches, true, 0, params.in_band_layer_check, &st.in_band_layers);
+                                               patches, true, 0, params.in_band_layer_check, &st.in_band_layers,
+                                               params.flat_layers);
   lap ("final refit");
   if (params.final_assignment != FinalAssignment::None && !patches.empty ())
   {
@@ -1240,7 +1241,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
       // left are found again by position (a unit plane at σ 1 cm in a slab of 40 % outliers).
       st.final_volume_layers += dropVolumeLayers (points, graph, noiseBands (points, params, patches), params.num_threads,
                                                   patches, true, found_before, params.in_band_layer_check,
-                                                  &st.in_band_layers);
+                                                  &st.in_band_layers, params.flat_layers);
       labels = labelSamples (points.size (), patches);
     }
     if (patches.size () > found_before && params.final_assignment != FinalAssignment::None)

@@ -28,6 +28,13 @@ namespace
   * and 15 cm held by planes with bands of 9-21 cm, 0.73-1.25 (at 1, one of them was dropped). */
 constexpr double kVolumeLayerRatio = 2.0;
 
+/** With the flat layers (DetectorParameters::flat_layers) a final plane is a layer of clutter when
+  * the layer beside its band on a side where the next layer holds at least half as many samples
+  * holds more than this many times its samples: the density beside the band, half as thick, twice
+  * the plane's own. Two faces of a thin wall give about 1 but nothing after the other face; a
+  * false plane in a slab of 30-40 % outliers gave 1.2-1.6 (the slab's density runs on flat). */
+constexpr double kFlatLayerRatio = 1.0;
+
 /** A plane is a layer inside another's band when that plane holds more than this many times its
   * samples within its band over its footprint. Faces of like density, one inside the other's band,
   * give about 1 (two faces of a thin wall), and a face's noise shared by two planes that the layer
@@ -127,13 +134,15 @@ countLayerSamples (const PointSet& points, const NeighborGraph& graph, const Pla
     return counts;
   const bool others = labels && labels->size () == points.size ();
   std::vector<std::size_t> in_band; // per other plane, by label
-  std::size_t above = 0, below = 0;
+  std::size_t above = 0, below = 0, further_above = 0, further_below = 0;
   for (std::size_t i = 0; i < points.size (); ++i)
   {
     const Eigen::Vector3d p = points.points[i].cast<double> ();
     const double d = footprint.distance (p);
     const double ad = std::abs (d);
     const bool beside = ad > band && ad <= 2.0 * band;
+    if (ad > 2.0 * band && ad <= 3.0 * band && footprint.covers (p))
+      ++(d > 0.0 ? further_above : further_below);
     const std::uint32_t l = others ? (*labels)[i] : kNoPatch;
     const bool other_in_band = ad <= band && l != kNoPatch && l != self;
     if (!(beside || other_in_band) || !footprint.covers (p))
@@ -148,6 +157,10 @@ countLayerSamples (const PointSet& points, const NeighborGraph& graph, const Pla
     }
   }
   counts.beside = std::max (above, below);
+  if (2 * further_above >= above)
+    counts.flat_beside = above;
+  if (2 * further_below >= below)
+    counts.flat_beside = std::max (counts.flat_beside, below);
   for (const std::size_t c : in_band)
     counts.other_in_band = std::max (counts.other_in_band, c);
   return counts;
@@ -195,7 +208,7 @@ isInBandLayer (const LayerCounts& counts, std::size_t members)
 std::size_t
 dropVolumeLayers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
                   int num_threads, std::vector<PlanarPatch>& patches, bool every_plane, std::size_t first,
-                  bool in_band_layers, std::size_t* in_band_dropped)
+                  bool in_band_layers, std::size_t* in_band_dropped, bool flat_layers)
 {
   const std::size_t count = patches.size ();
   // 0: kept, 1: a volume layer, 2: a layer inside another plane's band.
@@ -211,6 +224,8 @@ dropVolumeLayers (const PointSet& points, const NeighborGraph& graph, const std:
     const LayerCounts c = countLayerSamples (points, graph, plane, band[p], in_band ? &labels : nullptr,
                                              static_cast<std::uint32_t> (p));
     if (static_cast<double> (c.beside) > kVolumeLayerRatio * static_cast<double> (plane.members.size ()))
+      drop[p] = 1;
+    else if (every_plane && flat_layers && static_cast<double> (c.flat_beside) > kFlatLayerRatio * static_cast<double> (plane.members.size ()))
       drop[p] = 1;
     else if (in_band && isInBandLayer (c, plane.members.size ()))
       drop[p] = 2;

@@ -990,6 +990,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (VolumeLayerCheck),
     RSPD_SWITCH (FinalVolumeLayerCheck),
     RSPD_SWITCH (InBandLayerCheck),
+    RSPD_SWITCH (FlatLayers),
     RSPD_SWITCH (CurvedPlaneCheck),
     RSPD_SWITCH (LateCurvedCheck),
     RSPD_SWITCH (CurvedNormalTurn),

@@ -1,6 +1,7 @@
 /*
  * Tests of the volume-layer check (samplesBesideBand, dropVolumeLayers), of the in-band layers
- * (countLayerSamples, isInBandLayer) and of the surrounding clutter's count (clutterBesidePlane).
+ * (countLayerSamples, isInBandLayer), of the flat layers (LayerCounts::flat_beside) and of the
+ * surrounding clutter's count (clutterBesidePlane).
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
@@ -350,4 +351,67 @@ TEST (SurroundingClutter, SamplesNextToAnotherPlaneAreItsEdgeNotClutter)
   EXPECT_EQ (clutterBesidePlane (f.set, f.graph, empty, 0.045, 0.06, f.labels, f.open, 0), 0u);
   EXPECT_EQ (clutterBesidePlane (f.set, f.graph, f.planes[0], 0.06, 0.045, f.labels, f.open, 0), 0u);
   EXPECT_EQ (clutterBesidePlane (f.set, f.graph, f.planes[0], 0.045, 0.06, {}, f.open, 0), 0u);
+}
+
+namespace
+{
+/** Samples scattered evenly through a box 2 x 2 x 1 (a volume of clutter) and a plane z = 0.5 that
+  * holds every third sample within 0.05 of it (band 0.05): a layer inside the volume. */
+struct LayerInVolume
+{
+  PointSet set;
+  std::vector<PlanarPatch> planes;
+  std::vector<double> band {0.05};
+  NeighborGraph graph;
+
+  LayerInVolume ()
+  {
+    std::mt19937 rng (17);
+    std::uniform_real_distribution<float> u (0.0f, 1.0f);
+    std::vector<std::uint32_t> layer;
+    for (int i = 0; i < 6000; ++i)
+    {
+      const Eigen::Vector3f p (2.0f * u (rng), 2.0f * u (rng), u (rng));
+      if (std::abs (p.z () - 0.5f) <= 0.05f && i % 3 == 0)
+        layer.push_back (static_cast<std::uint32_t> (set.points.size ()));
+      set.points.push_back (p);
+      set.normals.push_back (Eigen::Vector3f::UnitZ ());
+      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
+    }
+    planes = {rspd_test::makePatch (layer, Eigen::Vector3d (1.0, 1.0, 0.5), {0, 0, 1}, 0.05, 0.3)};
+    graph = rspd_test::bruteForceGraph (set.points, 50);
+  }
+};
+} // namespace
+
+TEST (FlatLayers, ALayerOfAVolumeIsDroppedWhereTheRatioAloneKeepsIt)
+{
+  // About 200 members; beside the band, (0.05, 0.1] on each side, about 300 samples a side over
+  // the footprint, and as many again in (0.1, 0.15]: denser than the plane, flat past it.
+  LayerInVolume v;
+  const std::size_t members = v.planes[0].members.size ();
+  const LayerCounts c = countLayerSamples (v.set, v.graph, v.planes[0], v.band[0], nullptr, 0);
+  EXPECT_GT (c.beside, members);
+  EXPECT_LT (c.beside, 2 * members); // the final volume layers' ratio alone keeps it
+  EXPECT_GT (c.flat_beside, members);
+  std::vector<PlanarPatch> kept = v.planes;
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, v.band, 1, kept, true), 0u);
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, v.band, 1, v.planes, true, 0, false, nullptr, true), 1u);
+  EXPECT_TRUE (v.planes.empty ());
+  // Judged only with every plane (the final check).
+  LayerInVolume w;
+  EXPECT_EQ (dropVolumeLayers (w.set, w.graph, w.band, 1, w.planes, false, 0, false, nullptr, true), 0u);
+}
+
+TEST (FlatLayers, FacesOfAThinWallAndANoisyFaceInClutterAreKept)
+{
+  // The other face of a thin wall lies beside the band, with nothing after it: not flat.
+  TwoFaces f (0.05f);
+  const LayerCounts c = countLayerSamples (f.set, f.graph, f.planes[0], 0.03, nullptr, 0);
+  EXPECT_GT (c.beside, f.planes[0].members.size () / 2);
+  EXPECT_LT (c.flat_beside, f.planes[0].members.size () / 4);
+  EXPECT_EQ (dropVolumeLayers (f.set, f.graph, {0.03, 0.03}, 1, f.planes, true, 0, true, nullptr, true), 0u);
+  EXPECT_EQ (f.planes.size (), 2u);
+  NoisyFace n;
+  EXPECT_EQ (dropVolumeLayers (n.set, n.graph, n.band, 1, n.planes, true, 0, true, nullptr, true), 0u);
 }

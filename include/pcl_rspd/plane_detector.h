@@ -301,6 +301,17 @@ struct DetectorParameters
     * scaled ×1000 or turned (F1 0.83 against 0.93 as given), and 1 km away the layer merge joined
     * one to the plane (0.89). false = such planes are kept and joined. */
   bool in_band_layer_check = true;
+  /** \brief Departure (flat layers, LayerCounts::flat_beside): with final_volume_layer_check, a
+    * final plane is also dropped when the layer beside its band on one side (as samplesBesideBand)
+    * holds more samples than the plane and the layer after it, as thick, holds at least half as
+    * many again: the samples' density runs on flat past the plane, which is a layer of a volume of
+    * clutter, not a surface. A surface's noise falls off beside it (a Gaussian's 3-6 σ against its
+    * 6-9 σ), and a second face beside it (a thin wall, whose faces hold about as many samples each)
+    * has nothing after it. The ratio-2 rule alone kept layers where the volume ends inside the
+    * plane's band or where the plane holds a few outliers of many: a unit plane at σ 1 cm in a slab
+    * of 30-40 % outliers kept a false plane of 284-1,400 members whose beside layer held 1.2-1.6
+    * times as many. false = only the ratio-2 rule. */
+  bool flat_layers = true;
   /** \brief Departure (small-plane completion, completeSmallPlanes; part of the small-plane pass):
     * before the pass drops its planes still short of ε, a plane a clean seed seeded that holds at
     * least half of ε takes the samples within the noise band of its members' least-squares plane that

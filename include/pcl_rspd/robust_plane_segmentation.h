@@ -118,7 +118,9 @@ struct RobustPlane
   *    kept if that brings it to ε;
   *  - volume layers (setVolumeLayerCheck(false): kept): a plane such a noisy seed seeded is
   *    dropped once grown if the samples beside its noise band are four times as dense as within it
-  *    (the end of a volume of clutter, not a surface);
+  *    (the end of a volume of clutter, not a surface); once the planes are final every plane is
+  *    judged so (setFinalVolumeLayerCheck), and also dropped if the layers beside its band run on
+  *    flat and denser than it (setFlatLayers(false) for the ratio alone);
   *  - re-estimation within T2 (setBoundedReestimation(false) for the paper): a plane such a noisy
   *    seed seeded keeps its last estimate when a re-estimate's MND fails T2 (60°), where growth
   *    onto the faces around it would otherwise widen MND and MDP until it holds a whole box;
@@ -804,6 +806,16 @@ public:
   /** \brief Whether the final planes that are layers inside another plane's band are dropped. */
   bool
   getInBandLayerCheck () const { return params_.in_band_layer_check; }
+
+  /** \brief Flat layers (default on; false = the final volume layers' ratio alone): with the final
+    * volume layers, a final plane is also dropped when the layer beside its band on one side holds
+    * more samples than the plane and the next layer as many again: a layer of a volume of clutter,
+    * whose density runs on flat past it. See pcl::rspd::DetectorParameters::flat_layers. */
+  void
+  setFlatLayers (bool enable);
+  /** \brief Whether the final planes that are layers of a flat volume of clutter are dropped. */
+  bool
+  getFlatLayers () const { return params_.flat_layers; }
 
   /** \brief Curved-surface check (default on; false = the paper): a plane is dropped when a quadric
     * fitted to its samples explains at least a quarter of its residual variance and turns the

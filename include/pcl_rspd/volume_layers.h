@@ -22,6 +22,7 @@ struct LayerCounts
 {
   std::size_t beside = 0;        ///< samplesBesideBand
   std::size_t other_in_band = 0; ///< the most samples one other plane holds inside the band
+  std::size_t flat_beside = 0;   ///< the larger beside count of the sides whose next layer, as thick, holds at least half as many
 };
 
 /** \brief Samples in the layer beside a plane's noise band, on its denser side, over its footprint.
@@ -40,7 +41,8 @@ samplesBesideBand (const PointSet& points, const NeighborGraph& graph, const Pla
 
 /** \brief samplesBesideBand, and the most samples that one plane other than \a self holds (by
   * \a labels, per sample the index of its plane or kNoPatch; null: not counted) within \a band of
-  * the plane over its footprint. Both 0 when the plane cannot be judged. */
+  * the plane over its footprint, and LayerCounts::flat_beside (the next layer: between 2 and 3
+  * \a band). All 0 when the plane cannot be judged. */
 LayerCounts
 countLayerSamples (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double band,
                    const std::vector<std::uint32_t>* labels, std::uint32_t self);
@@ -96,11 +98,14 @@ isInBandLayer (const LayerCounts& counts, std::size_t members);
   * \param[in] in_band_layers with \a every_plane: also drop the layers inside another plane's band
   * (isInBandLayer), counted against every plane in \a patches
   * \param[in,out] in_band_dropped if not null: incremented by the planes dropped as such layers
+  * \param[in] flat_layers with \a every_plane: also drop the planes whose LayerCounts::flat_beside
+  * exceeds their samples (DetectorParameters::flat_layers)
   * \return planes dropped */
 std::size_t
 dropVolumeLayers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
                   int num_threads, std::vector<PlanarPatch>& patches, bool every_plane = false,
-                  std::size_t first = 0, bool in_band_layers = false, std::size_t* in_band_dropped = nullptr);
+                  std::size_t first = 0, bool in_band_layers = false, std::size_t* in_band_dropped = nullptr,
+                  bool flat_layers = false);
 
 } // namespace rspd
 } // namespace pcl

@@ -565,6 +565,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setInBandLayerCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setFlatLayers (bool enable)
+{
+  params_.flat_layers = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setTrimmedSeedGrowth (bool enable)
 {
   params_.trimmed_seed_growth = enable;
