@@ -219,6 +219,22 @@ constexpr double kClutterShellFrom = 4.5, kClutterShellTo = 6.0;
 /** φ(0), the standard normal density at 0. */
 constexpr double kInvSqrtTwoPi = 0.3989422804014327;
 
+/** The members of \a plane farther from it than \a limit leave it (their labels kNoPatch); its
+  * first index follows. */
+void
+releaseMembersBeyond (const PointSet& points, double limit, PlanarPatch& plane, std::vector<std::uint32_t>& labels)
+{
+  std::size_t kept = 0;
+  for (const auto m : plane.members)
+    if (std::abs ((points.points[m].cast<double> () - plane.center).dot (plane.normal)) <= limit)
+      plane.members[kept++] = m;
+    else
+      labels[m] = kNoPatch;
+  plane.members.resize (kept);
+  if (kept > 0)
+    plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
+}
+
 /** Tail odds (departure, DetectorParameters::tail_odds): lowers each plane's tail limit to where its
   * Gaussian noise is no longer likelier than the clutter around it. Per plane, the clutter's density
   * per unit |d| is read from the samples no plane holds that lie beside it (most of their neighbours
@@ -328,20 +344,8 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
       // Surrounding clutter: growth and the far-member release admitted members out to MDP or 3 σ
       // whatever the clutter; beyond the tail's end they are likelier clutter than the plane's.
       for (std::size_t l = 0; l < patches.size (); ++l)
-      {
-        if (!(bounded[l] < tail_limit[l]))
-          continue;
-        PlanarPatch& plane = patches[l];
-        std::size_t kept = 0;
-        for (const auto m : plane.members)
-          if (std::abs ((points.points[m].cast<double> () - plane.center).dot (plane.normal)) <= bounded[l])
-            plane.members[kept++] = m;
-          else
-            labels[m] = kNoPatch;
-        plane.members.resize (kept);
-        if (kept > 0)
-          plane.first_index = *std::min_element (plane.members.begin (), plane.members.end ());
-      }
+        if (bounded[l] < tail_limit[l])
+          releaseMembersBeyond (points, bounded[l], patches[l], labels);
     if (params.member_gaps)
       for (std::size_t l = 0; l < patches.size (); ++l)
         in_clutter.push_back (bounded[l] < tail_limit[l]);

@@ -141,13 +141,14 @@ countLayerSamples (const PointSet& points, const NeighborGraph& graph, const Pla
     const double d = footprint.distance (p);
     const double ad = std::abs (d);
     const bool beside = ad > band && ad <= 2.0 * band;
-    if (ad > 2.0 * band && ad <= 3.0 * band && footprint.covers (p))
-      ++(d > 0.0 ? further_above : further_below);
+    const bool further = ad > 2.0 * band && ad <= 3.0 * band; // the next layer, for flat_beside
     const std::uint32_t l = others ? (*labels)[i] : kNoPatch;
     const bool other_in_band = ad <= band && l != kNoPatch && l != self;
-    if (!(beside || other_in_band) || !footprint.covers (p))
+    if (!(beside || further || other_in_band) || !footprint.covers (p))
       continue;
-    if (beside)
+    if (further)
+      ++(d > 0.0 ? further_above : further_below);
+    else if (beside)
       ++(d > 0.0 ? above : below);
     else
     {

@@ -135,6 +135,19 @@ detectOnPclNormals (const pcl::rspd::Scene& scene, const pcl::PointCloud<pcl::No
                  });
 }
 
+/** The unit plane at σ 1 cm, 100,000 points, among \a outliers (a share of the points) in its box
+  * grown by 5 % of its diagonal: a slab of outliers 14 cm thick. */
+pcl::rspd::SceneOptions
+planeInSlab (double outliers, std::uint32_t seed = pcl::rspd::SceneOptions ().seed)
+{
+  pcl::rspd::SceneOptions o;
+  o.num_points = 100000;
+  o.noise = 0.01;
+  o.outlier_ratio = outliers;
+  o.seed = seed;
+  return o;
+}
+
 bool
 loadShared (const std::string& name, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<std::uint32_t>& truth)
 {
@@ -522,10 +535,7 @@ TEST (Scenario, PlaneWrappedInASlabOfOutliersHasNoPlanesOfOutliers)
   // whose bands reach its own (F1 0.790, measured with rspd_segment --final-volume-layers off; the
   // PCL SAC loop 0.805). Judged once final, each has about 13 times its samples in the layer beside
   // its band, and is dropped.
-  pcl::rspd::SceneOptions o;
-  o.num_points = 100000;
-  o.noise = 0.01;
-  o.outlier_ratio = 0.2;
+  const pcl::rspd::SceneOptions o = planeInSlab (0.2);
   const Detection with = detectScene ("plane", o);
   const Detection without = detectScene ("plane", o, true, pcl::rspd::NormalScale::Automatic,
                                          [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
@@ -550,11 +560,7 @@ TEST (Scenario, PlaneInASlabOfOutliersEndsItsTailWhereTheOutliersOutnumberItsNoi
   // outliers growth gave it out to 3-3.5 σ: F1 0.915 (measured with
   // rspd_segment --surrounding-clutter off). With the clutter counted around the plane over its
   // footprint, the tail ends near 2.5 σ and the members beyond it leave: 0.940.
-  pcl::rspd::SceneOptions o;
-  o.num_points = 100000;
-  o.noise = 0.01;
-  o.outlier_ratio = 0.2;
-  o.seed = 3;
+  const pcl::rspd::SceneOptions o = planeInSlab (0.2, 3);
   const Detection with = detectScene ("plane", o);
   const Detection without = detectScene ("plane", o, true, pcl::rspd::NormalScale::Automatic,
                                          [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
@@ -574,11 +580,7 @@ TEST (Scenario, PlaneInASlabOfThirtyPercentOutliersKeepsNoLayerOfThem)
   // the slab's bottom face, whose beside layer held 1.6 times its samples (under the final volume
   // layers' ratio of 2), was kept: 2 planes, F1 0.853 (rspd_segment --flat-layers off). The slab's
   // density runs on flat past it: with the flat layers it goes, 0.917.
-  pcl::rspd::SceneOptions o;
-  o.num_points = 100000;
-  o.noise = 0.01;
-  o.outlier_ratio = 0.3;
-  o.seed = 2;
+  const pcl::rspd::SceneOptions o = planeInSlab (0.3, 2);
   const Detection with = detectScene ("plane", o);
   const Detection without = detectScene ("plane", o, true, pcl::rspd::NormalScale::Automatic,
                                          [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
@@ -598,11 +600,7 @@ TEST (Scenario, PlaneInAThinSlabOfOutliersScaledHasNoLayerOfOutliersInsideItsBan
   // so wide that their bands took in half of it (F1 0.834). The true plane holds more than four
   // times their samples within their bands: layers inside its band, dropped (F1 0.971, as the
   // scene in metres gives).
-  pcl::rspd::SceneOptions o;
-  o.num_points = 100000;
-  o.noise = 0.01;
-  o.outlier_ratio = 0.1;
-  o.seed = 2;
+  pcl::rspd::SceneOptions o = planeInSlab (0.1, 2);
   o.scale = 1000.0;
   const Detection with = detectScene ("plane", o);
   const Detection without = detectScene ("plane", o, true, pcl::rspd::NormalScale::Automatic,

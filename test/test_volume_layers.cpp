@@ -17,6 +17,27 @@ using namespace pcl::rspd;
 
 namespace
 {
+/** 6,000 samples scattered evenly through the box 2 x 2 x 1 times \a scale (a volume of clutter;
+  * normals along z) from \a seed, appended to \a set. \return those for which \a take (the
+  * unscaled sample, its draw) holds. */
+template <typename Take> std::vector<std::uint32_t>
+scatterInBox (PointSet& set, unsigned seed, float scale, Take&& take)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<float> u (0.0f, 1.0f);
+  std::vector<std::uint32_t> taken;
+  for (int i = 0; i < 6000; ++i)
+  {
+    const Eigen::Vector3f p (2.0f * u (rng), 2.0f * u (rng), u (rng));
+    if (take (p, i))
+      taken.push_back (static_cast<std::uint32_t> (set.points.size ()));
+    set.points.push_back (scale * p);
+    set.normals.push_back (Eigen::Vector3f::UnitZ ());
+    set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
+  }
+  return taken;
+}
+
 /** Samples scattered evenly through a box 2 x 2 x 1 (a volume of clutter), and the plane a noisy
   * seed would make where the volume ends below: every sixth sample of the bottom 0.2 (the ones whose
   * cut neighbourhoods give normals across the end), its plane z = 0.1 and band 0.1. The layer beside
@@ -30,18 +51,9 @@ struct VolumeEnd
 
   explicit VolumeEnd (float scale = 1.0f)
   {
-    std::mt19937 rng (11);
-    std::uniform_real_distribution<float> u (0.0f, 1.0f);
-    std::vector<std::uint32_t> end;
-    for (int i = 0; i < 6000; ++i)
-    {
-      const Eigen::Vector3f p (2.0f * u (rng), 2.0f * u (rng), u (rng));
-      if (p.z () < 0.2f && i % 6 == 0)
-        end.push_back (static_cast<std::uint32_t> (set.points.size ()));
-      set.points.push_back (scale * p);
-      set.normals.push_back (Eigen::Vector3f::UnitZ ());
-      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
-    }
+    const std::vector<std::uint32_t> end = scatterInBox (set, 11, scale, [] (const Eigen::Vector3f& p, int i) {
+      return p.z () < 0.2f && i % 6 == 0;
+    });
     planes = {rspd_test::makePatch (end, scale * Eigen::Vector3d (1.0, 1.0, 0.1), {0, 0, 1}, scale * 0.1, 0.3)};
     planes[0].retested = true;
     band[0] *= scale;
@@ -366,18 +378,9 @@ struct LayerInVolume
 
   LayerInVolume ()
   {
-    std::mt19937 rng (17);
-    std::uniform_real_distribution<float> u (0.0f, 1.0f);
-    std::vector<std::uint32_t> layer;
-    for (int i = 0; i < 6000; ++i)
-    {
-      const Eigen::Vector3f p (2.0f * u (rng), 2.0f * u (rng), u (rng));
-      if (std::abs (p.z () - 0.5f) <= 0.05f && i % 3 == 0)
-        layer.push_back (static_cast<std::uint32_t> (set.points.size ()));
-      set.points.push_back (p);
-      set.normals.push_back (Eigen::Vector3f::UnitZ ());
-      set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
-    }
+    const std::vector<std::uint32_t> layer = scatterInBox (set, 17, 1.0f, [] (const Eigen::Vector3f& p, int i) {
+      return std::abs (p.z () - 0.5f) <= 0.05f && i % 3 == 0;
+    });
     planes = {rspd_test::makePatch (layer, Eigen::Vector3d (1.0, 1.0, 0.5), {0, 0, 1}, 0.05, 0.3)};
     graph = rspd_test::bruteForceGraph (set.points, 50);
   }
