@@ -418,3 +418,16 @@ TEST (FlatLayers, FacesOfAThinWallAndANoisyFaceInClutterAreKept)
   NoisyFace n;
   EXPECT_EQ (dropVolumeLayers (n.set, n.graph, n.band, 1, n.planes, true, 0, true, nullptr, true), 0u);
 }
+
+TEST (FlatLayers, NothingToJudgeGivesZero)
+{
+  // A band that is zero or not a number, or a plane with no members: no layer is counted, and the
+  // flat layers drop nothing.
+  LayerInVolume v;
+  EXPECT_EQ (countLayerSamples (v.set, v.graph, v.planes[0], 0.0, nullptr, 0).flat_beside, 0u);
+  EXPECT_EQ (countLayerSamples (v.set, v.graph, v.planes[0], std::nan (""), nullptr, 0).flat_beside, 0u);
+  PlanarPatch empty;
+  EXPECT_EQ (countLayerSamples (v.set, v.graph, empty, 0.05, nullptr, 0).flat_beside, 0u);
+  EXPECT_EQ (dropVolumeLayers (v.set, v.graph, {0.0}, 1, v.planes, true, 0, false, nullptr, true), 0u);
+  EXPECT_EQ (v.planes.size (), 1u);
+}
