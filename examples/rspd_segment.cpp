@@ -177,7 +177,7 @@ const char* const kHelp =
     "                   seeded: a thin slab of outliers wrapping a plane (default on; off = only\n"
     "                   noisy seeds' planes are judged)\n"
     "  --in-band-layers on|off  with them, also drop a final plane within whose noise band\n"
-    "                   another plane holds four times its points: clutter beside a denser plane,\n"
+    "                   another plane is four times as dense: clutter beside a denser plane,\n"
     "                   not a surface; the layer merge does not join it (default on; off = kept)\n"
     "  --flat-layers on|off  with them, also drop a final plane when the layer beside its band\n"
     "                   holds more points than it and the next layer as many again: a layer of\n"

@@ -174,21 +174,24 @@ struct ClutterLayer
   std::vector<double> band {0.03, 0.06};
   NeighborGraph graph;
 
-  ClutterLayer ()
+  /** \a count samples between z = 0.02 and 0.02 + \a thick, their plane through the middle with a
+    * band of \a layer_band. */
+  explicit ClutterLayer (int count = 400, float thick = 0.06f, double layer_band = 0.06)
   {
+    band[1] = layer_band;
     const auto face = rspd_test::addRectangle (set, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 60, 60, 0.01f, 3);
     std::mt19937 rng (7);
     std::uniform_real_distribution<float> u (0.0f, 1.0f);
     std::vector<std::uint32_t> layer;
-    for (int i = 0; i < 400; ++i)
+    for (int i = 0; i < count; ++i)
     {
       layer.push_back (static_cast<std::uint32_t> (set.points.size ()));
-      set.points.emplace_back (2.0f * u (rng), 2.0f * u (rng), 0.02f + 0.06f * u (rng));
+      set.points.emplace_back (2.0f * u (rng), 2.0f * u (rng), 0.02f + thick * u (rng));
       set.normals.push_back (Eigen::Vector3f::UnitZ ());
       set.input_indices.push_back (static_cast<pcl::index_t> (set.input_indices.size ()));
     }
     planes = {rspd_test::makePatch (face, {1.0, 1.0, 0.0}, {0, 0, 1}, 0.03, 0.3),
-              rspd_test::makePatch (layer, {1.0, 1.0, 0.05}, {0, 0, 1}, 0.06, 0.3)};
+              rspd_test::makePatch (layer, {1.0, 1.0, 0.02 + 0.5 * thick}, {0, 0, 1}, layer_band, 0.3)};
     // k = 50, as the automatic k gives at this size: the footprint's cells (the neighbourhood
     // radius, 0.13) then cover the face under the layer's scattered samples.
     graph = rspd_test::bruteForceGraph (set.points, 50);
@@ -234,6 +237,45 @@ TEST (InBandLayers, ALayerOfClutterInsideADenserPlanesBandIsDropped)
   EXPECT_EQ (dropVolumeLayers (c.set, c.graph, c.band, 1, later, false, 0, true, &in_band), 0u);
   EXPECT_EQ (later.size (), 2u);
   EXPECT_EQ (in_band, 1u);
+}
+
+TEST (InBandLayers, AWideLayerOverAThinFaceIsJudgedByDensity)
+{
+  // 1,000 samples between z = 0.02 and 0.14, their plane at 0.08 with a band of 10 cm that takes in
+  // nearly all of the face (σ 1 cm, band 3 cm): fewer than four times the layer's samples, but
+  // squeezed into a band a third as thick, more than four times as dense.
+  ClutterLayer c (1000, 0.12f, 0.1);
+  const std::vector<std::uint32_t> labels = c.labels ();
+  const LayerCounts layer = countLayerSamples (c.set, c.graph, c.planes[1], c.band[1], &labels, 1);
+  EXPECT_EQ (layer.other, 0u);
+  EXPECT_GT (layer.other_in_band, 2 * c.planes[1].members.size ());
+  EXPECT_LT (layer.other_in_band, 4 * c.planes[1].members.size ());
+  EXPECT_FALSE (isInBandLayer (layer, c.planes[1].members.size ())); // by counts
+  EXPECT_TRUE (isInBandLayer (layer, c.planes[1].members.size (), c.band[1], c.band[0]));
+  // A wider other band, or none known, leaves the counts.
+  EXPECT_FALSE (isInBandLayer (layer, c.planes[1].members.size (), c.band[1], 0.2));
+  EXPECT_FALSE (isInBandLayer (layer, c.planes[1].members.size (), c.band[1], 0.0));
+  EXPECT_FALSE (isInBandLayer (layer, c.planes[1].members.size (), std::nan (""), c.band[0]));
+  std::vector<PlanarPatch> kept = c.planes;
+  std::size_t in_band = 0;
+  EXPECT_EQ (dropVolumeLayers (c.set, c.graph, c.band, 2, kept, true, 0, true, &in_band), 1u);
+  EXPECT_EQ (in_band, 1u);
+  ASSERT_EQ (kept.size (), 1u);
+  EXPECT_EQ (kept[0].members.size (), 3600u);
+}
+
+TEST (InBandLayers, FacesOfUnequalNoiseInsideEachOthersBandAreKept)
+{
+  // Two faces 2 cm apart, the second's band taken as twice the first's (a noisier face): the first
+  // holds about as many samples in the second's band as the second, twice as dense, not four times.
+  TwoFaces f (0.02f);
+  const std::vector<std::uint32_t> labels = labelSamples (f.set.points.size (), f.planes);
+  const LayerCounts c = countLayerSamples (f.set, f.graph, f.planes[1], 0.06, &labels, 1);
+  EXPECT_EQ (c.other, 0u);
+  EXPECT_FALSE (isInBandLayer (c, f.planes[1].members.size (), 0.06, 0.03));
+  std::size_t in_band = 0;
+  EXPECT_EQ (dropVolumeLayers (f.set, f.graph, {0.03, 0.06}, 1, f.planes, true, 0, true, &in_band), 0u);
+  EXPECT_EQ (f.planes.size (), 2u);
 }
 
 TEST (InBandLayers, FacesOfLikeDensityInsideEachOthersBandAreKept)

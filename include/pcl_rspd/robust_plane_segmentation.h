@@ -797,8 +797,8 @@ public:
   getFinalVolumeLayerCheck () const { return params_.final_volume_layer_check; }
 
   /** \brief In-band layers (default on; false = such planes are kept): with the final volume
-    * layers, a final plane within whose noise band another plane holds more than four times its
-    * samples over its footprint is dropped, and the layer merge does not join it to that plane: a
+    * layers, a final plane within whose noise band another plane is more than four times as dense
+    * over its footprint is dropped, and the layer merge does not join it to that plane: a
     * plane grown among the clutter beside a denser one, whose band takes that plane in. See
     * pcl::rspd::DetectorParameters::in_band_layer_check. */
   void

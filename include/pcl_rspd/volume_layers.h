@@ -22,6 +22,7 @@ struct LayerCounts
 {
   std::size_t beside = 0;        ///< samplesBesideBand
   std::size_t other_in_band = 0; ///< the most samples one other plane holds inside the band
+  std::uint32_t other = 0xffffffffu; ///< that plane's index (0xffffffff, kNoPatch: none)
   std::size_t flat_beside = 0;   ///< the larger beside count of the sides whose next layer, as thick, holds at least half as many
 };
 
@@ -62,18 +63,25 @@ clutterBesidePlane (const PointSet& points, const NeighborGraph& graph, const Pl
                     double to, const std::vector<std::uint32_t>& labels, const std::vector<std::uint32_t>& open,
                     std::uint32_t self);
 
-/** \brief Whether a plane of \a members samples, with \a counts from countLayerSamples, is a layer
-  * inside another plane's band (DetectorParameters::in_band_layer_check): that plane holds more
-  * than four times as many samples within the band over the footprint as the plane itself.
+/** \brief Whether a plane of \a members samples and noise band \a band, with \a counts from
+  * countLayerSamples, is a layer inside another plane's band (DetectorParameters::in_band_layer_check):
+  * that plane (LayerCounts::other, band \a other_band) is more than four times as dense within the
+  * band over the footprint as the plane itself.
   *
-  * A surface holds at least about as many samples as any other surface where both lie within its
-  * noise: faces of like density, one inside the other's band (two faces of a thin wall), give
-  * about 1. A plane grown among the clutter beside a denser one, whose spread makes a band wide
-  * enough to take in that plane, gives the density of that plane over the clutter's: a unit plane
-  * at σ 1 cm in a slab of 20 % outliers kept, scaled ×1000 or turned, a plane of 7,400 outliers
-  * whose band held 80,000 of the true plane's samples (10.9). */
+  * Densities, not counts: the other plane's samples there fill the thinner of the two bands, the
+  * plane's own the whole of its band, so where \a other_band is the narrower and that plane holds
+  * at least as many samples there as the plane (it spans the footprint; a small face under a share
+  * of it says nothing of the density over the rest) the count ratio is scaled by \a band /
+  * \a other_band (a band of 0 or one not finite: counts alone). A surface holds
+  * at least about as many samples as any other surface where both lie within its noise: faces of
+  * like density, one inside the other's band (two faces of a thin wall), give about 1. A plane
+  * grown among the clutter beside a denser one, whose spread makes a band wide enough to take in
+  * that plane, gives the density of that plane over the clutter's: a unit plane at σ 1 cm in a slab
+  * of 20 % outliers kept, scaled ×1000 or turned, a plane of 7,400 outliers whose band held 80,000
+  * of the true plane's samples (10.9); in 40 % outliers 1 km away one of 17,421 outliers, band 8.1 cm,
+  * over the true plane's 65,447 samples, band 3.2 cm (3.8 by counts, 9.4 by densities). */
 bool
-isInBandLayer (const LayerCounts& counts, std::size_t members);
+isInBandLayer (const LayerCounts& counts, std::size_t members, double band = 0.0, double other_band = 0.0);
 
 /** \brief Drop the noisy seeds' planes that are the boundary layers of a volume of samples
   * (departure, see DetectorParameters::volume_layer_check).
