@@ -209,12 +209,10 @@ mergeBandLayers (const PointSet& points, const NeighborGraph& graph, const Detec
       }
       // A layer inside a denser plane's band is a share of the clutter or noise around it: joined,
       // it would widen that plane's band into the clutter (DetectorParameters::in_band_layer_check).
-      if (into[a] != kNoPatch && params.final_volume_layer_check && params.in_band_layer_check)
-      {
-        const LayerCounts c = countLayerSamples (points, graph, pa, band[a], &labels, static_cast<std::uint32_t> (a));
-        if (isInBandLayer (c, pa.members.size (), band[a], c.other < band.size () ? band[c.other] : 0.0))
-          into[a] = kNoPatch;
-      }
+      if (into[a] != kNoPatch && params.final_volume_layer_check && params.in_band_layer_check &&
+          isInBandLayer (countLayerSamples (points, graph, pa, band[a], &labels, static_cast<std::uint32_t> (a)),
+                         patches, band, a))
+        into[a] = kNoPatch;
     }
   }
   std::size_t merged = 0;

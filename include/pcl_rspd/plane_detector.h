@@ -293,8 +293,8 @@ struct DetectorParameters
   bool final_volume_layer_check = true;
   /** \brief Departure (in-band layers, isInBandLayer): with final_volume_layer_check, a final plane
     * within whose noise band, over its footprint, another plane is more than four times as dense
-    * as the plane itself (its samples there over the thinner of the two bands) is dropped too, and the layer merge does not join such a plane to
-    * the plane whose band it lies in. A plane grown among the clutter beside a denser plane has a
+    * as the plane itself (its samples there over the thinner of the two bands) is dropped too, and
+    * the layer merge does not join such a plane to the plane whose band it lies in. A plane grown among the clutter beside a denser plane has a
     * spread, and so a band, wide enough to take in that plane: it is a share of the clutter or of
     * the noise around the plane, not a surface, and joined to it, it widens its band into the
     * clutter. A unit plane at σ 1 cm in a slab of 20 % outliers 0.141 thick kept such a plane when

@@ -83,6 +83,12 @@ clutterBesidePlane (const PointSet& points, const NeighborGraph& graph, const Pl
 bool
 isInBandLayer (const LayerCounts& counts, std::size_t members, double band = 0.0, double other_band = 0.0);
 
+/** \brief isInBandLayer for plane \a self of \a patches, with \a band per plane (LayerCounts::other
+  * indexes it; out of range: counts alone). */
+bool
+isInBandLayer (const LayerCounts& counts, const std::vector<PlanarPatch>& patches, const std::vector<double>& band,
+               std::size_t self);
+
 /** \brief Drop the noisy seeds' planes that are the boundary layers of a volume of samples
   * (departure, see DetectorParameters::volume_layer_check).
   *
