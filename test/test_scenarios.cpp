@@ -250,15 +250,16 @@ TEST (Scenario, WindowsRecessedWithinTheFacadesNoiseTakeTheirSamplesBack)
   // bands (3 sigma each) overlap, and the wall, grown first, kept up to 30 % of some windows'
   // samples, scattered over them, and gave others its samples along their rims. Measured: F1 0.909,
   // 14 of 16 planes, 2 false planes without the step-side rule; 0.982 and 16 with it (0.932, 15
-  // planes, 1 false, against 0.988 and 16 since the surrounding-clutter tail).
+  // planes, 1 false, against 0.988 and 16 since the surrounding-clutter tail; 0.965 and 16 against
+  // 0.997 since the connected parts' core members, fifty-fourth session).
   pcl::rspd::SceneOptions o;
   o.noise = 0.05;
   const auto off = [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setStepSides (false); };
   const Detection without = detectScene ("facade", o, true, pcl::rspd::NormalScale::Automatic, off);
   const Detection with = detectScene ("facade", o);
-  EXPECT_LT (without.score.f1, with.score.f1 - 0.03);
-  EXPECT_LT (without.score.found, 16);
-  EXPECT_GE (with.score.f1, 0.97);
+  EXPECT_LT (without.score.f1, with.score.f1 - 0.02);
+  EXPECT_LT (without.score.precision, 0.95);
+  EXPECT_GE (with.score.f1, 0.99);
   EXPECT_EQ (with.score.found, 16);
   EXPECT_EQ (with.score.false_planes, 0);
 }
@@ -526,6 +527,26 @@ TEST (Scenario, FacadeOutliersBeyondTheRimsAreNotChainedInByTheLastAssignment)
   EXPECT_LT (without.score.f1, 0.95);
   EXPECT_GT (with.stats.member_gap_refused, 0u);
   EXPECT_EQ (without.stats.member_gap_refused, 0u);
+}
+
+TEST (Scenario, CoplanarWindowsAreNotJoinedThroughTheOutliersInTheirBand)
+{
+  // A random facade (layout 8026, σ 4.25 cm, 417,000 points, 15 % outliers): its nine windows lie in
+  // one plane 22 cm behind the wall, and the outliers behind the wall in their band (a median of 17
+  // of their 50 nearest neighbours in that plane, against 50 for its true members) percolate. Connected parts saw the windows as one part through
+  // them: one plane held all nine (F1 0.588, 1 of 10 planes found, rspd_segment at commit d0397fc).
+  // A part's core samples now have a third of their neighbours in the plane, only pieces of surface
+  // are parts, and members more than a hop from every part are released: 0.924, 10 of 10.
+  pcl::rspd::SceneOptions o;
+  o.layout = 8026;
+  o.num_points = 417000;
+  o.noise = 0.0425;
+  o.seed = 813;
+  const Detection d = detectScene ("facade", o);
+  EXPECT_EQ (d.score.found, 10);
+  EXPECT_EQ (d.score.false_planes, 0);
+  EXPECT_EQ (d.score.fragments, 0);
+  EXPECT_GT (d.score.f1, 0.9);
 }
 
 TEST (Scenario, PlaneWrappedInASlabOfOutliersHasNoPlanesOfOutliers)

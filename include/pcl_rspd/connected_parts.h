@@ -18,19 +18,24 @@ namespace pcl
 namespace rspd
 {
 /** \brief Connected parts (departure, DetectorParameters::connected_parts): split every plane whose
-  * members that pass its own inlier test fall into two or more parts of at least \a min_part_size
-  * samples that no graph edge joins.
+  * core members fall into two or more pieces of surface of at least \a min_part_size samples that no
+  * graph edge joins.
   *
   * M1 joins patches only through a graph edge, so a plane of the paper is one connected piece of
   * surface. A plane can still hold two pieces of one geometric plane that do not touch: growth
   * tests a sample against the estimate of the moment, so samples of a surface that crosses the plane
   * in the gap between the pieces join both and carry M1 across (synpeb_pc01's two largest planes,
   * 13 cm apart). Those samples fail the plane's inlier test (Sec. 3.3: distance within MDP, normal
-  * within MND) at its final estimate; the samples that pass it are joined by the graph's edges (either
-  * direction) into parts. With two or more parts of at least \a min_part_size samples, each such part
-  * becomes a plane (largest first keeps the plane's place; ties to the lower sample index) and is
-  * estimated again; every other member joins the part of a graph neighbour in its plane (in rounds
-  * reading the round before, the lowest part first), or the largest part where none is reached.
+  * within MND) at its final estimate. A core member passes it and has at least a third of its k
+  * neighbours in the plane: clutter inside the band passes the test too, but has its neighbours
+  * mostly outside (outliers behind a facade, percolating between its coplanar windows). Core members
+  * are joined by the graph's edges (either direction) into parts; a part is a piece of surface when
+  * its median sample has at least three quarters of its neighbours in the plane (a plane of clutter
+  * falls into parts too, whose samples have neighbours all around outside it). With two or more
+  * such pieces, each becomes a plane (largest first keeps the plane's place; ties to the lower
+  * sample index) and is estimated again; every other member joins the piece of a graph neighbour in
+  * it (the lowest piece), or is released where it has none (one hop: a member chained farther is
+  * clutter between the pieces).
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] params constants (min_patch_size is the smallest part that becomes a plane)
