@@ -111,10 +111,7 @@ TEST (ConnectedParts, CluttersWebOfInliersIsNoPart)
       b.set.input_indices.push_back (static_cast<pcl::index_t> (b.set.input_indices.size ()));
     }
   const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
-  std::vector<std::uint32_t> held (members);
-  for (std::uint32_t i = 0; i < members; ++i)
-    held[i] = i;
-  std::vector<PlanarPatch> patches = {rspd_test::makePatch (held, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+  std::vector<PlanarPatch> patches = onePlane (members); // the added samples in no plane
   std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
   EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), patches, labels), 1u);
   ASSERT_EQ (patches.size (), 2u);
@@ -145,10 +142,7 @@ TEST (ConnectedParts, PartsOfClutterAreNoPiecesOfSurface)
     b.set.input_indices.push_back (static_cast<pcl::index_t> (b.set.input_indices.size ()));
   }
   const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
-  std::vector<std::uint32_t> held (members);
-  for (std::uint32_t i = 0; i < members; ++i)
-    held[i] = i;
-  std::vector<PlanarPatch> patches = {rspd_test::makePatch (held, {0, 0, 0}, {0, 0, 1}, 0.01, 0.1)};
+  std::vector<PlanarPatch> patches = onePlane (members); // the added samples in no plane
   std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
   const std::vector<std::uint32_t> before = labels;
   EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), patches, labels), 0u);
