@@ -161,14 +161,15 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
       if (p == kNoPatch)
         open.push_back (m);
     }
-    // Every other member joins the part of a graph neighbour that is a core sample of it (the lowest
-    // part); one hop only: a member farther from every part is released. Why: members chained from
-    // neighbour to neighbour are the clutter web the core test left out, which, given to the
-    // largest part, made it a plane across the others (the facade above: 0.588, 1 of 10 planes).
+    // Every other member joins the part of a graph neighbour that is a core sample of it (only those
+    // have a part yet; the lowest part); one hop only: a member farther from every part is released.
+    // Why: members chained from neighbour to neighbour are the clutter web the core test left out,
+    // which, given to the largest part, made it a plane across the others (the facade above: 0.588,
+    // 1 of 10 planes).
     std::vector<std::uint32_t> choice (open.size (), kNoPatch);
     for (std::size_t t = 0; t < open.size (); ++t)
       graph.forEachNeighbor (open[t], [&] (std::uint32_t j) {
-        if (labels[j] == l && part[j] != kNoPatch && core[j])
+        if (labels[j] == l && part[j] != kNoPatch)
           choice[t] = std::min (choice[t], part[j]);
       });
     for (std::size_t t = 0; t < open.size (); ++t)
