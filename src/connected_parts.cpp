@@ -68,9 +68,12 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
   // sample on a straight rim has half of its neighbours in the face, a third leaves that margin.
   // Half instead of a third split one more plane on room_scan1 and three more on cgal_building
   // (measured without the surface test below).
-  std::vector<std::uint8_t> core (n, 0);
-  std::vector<std::uint16_t> in_plane_share (n, 0); // neighbours in the sample's plane, of k
+  // Per sample, its neighbours in its plane where it passes the plane's inlier test, else 0.
+  std::vector<std::uint16_t> in_plane_share (n, 0);
   const int k = graph.k ();
+  const auto core = [&] (std::uint32_t i) {
+    return in_plane_share[i] > 0 && 3 * static_cast<int> (in_plane_share[i]) >= k;
+  };
 #pragma omp parallel for schedule(static, 4096) num_threads(resolveThreads (params.num_threads))
   for (std::ptrdiff_t i = 0; i < count; ++i)
   {
@@ -79,7 +82,6 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
       continue;
     int in_plane = 0;
     graph.forEachNeighbor (static_cast<std::size_t> (i), [&] (std::uint32_t j) { in_plane += labels[j] == l; });
-    core[i] = 3 * in_plane >= k;
     in_plane_share[i] = static_cast<std::uint16_t> (in_plane);
   }
 
@@ -92,13 +94,13 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
   for (std::ptrdiff_t ii = 0; ii < count; ++ii)
   {
     const std::uint32_t i = static_cast<std::uint32_t> (ii);
-    if (!core[i])
+    if (!core (i))
       continue;
     // The row's samples join i's set one by one: starting each search from the set's last known
     // root, not from i, saves walking i's path once per neighbour.
     std::uint32_t set = i;
     graph.forEachNeighbor (i, [&] (std::uint32_t j) {
-      if (core[j] && labels[j] == labels[i])
+      if (core (j) && labels[j] == labels[i])
         set = unite (parent, set, j);
     });
   }
@@ -109,7 +111,7 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
   std::vector<std::atomic<std::uint32_t>> ().swap (parent); // memory: 4 bytes a sample at 10M samples
   std::vector<std::uint32_t> part_size (n, 0);
   for (std::uint32_t i = 0; i < n; ++i)
-    if (core[i])
+    if (core (i))
       ++part_size[root[i]];
 
   std::size_t added = 0;
@@ -122,7 +124,7 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     // The plane's parts of at least min_patch_size core samples: (size, root), largest first.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> big;
     for (const auto m : patches[l].members)
-      if (core[m] && root[m] == m && part_size[m] >= params.min_patch_size)
+      if (core (m) && root[m] == m && part_size[m] >= params.min_patch_size)
         big.emplace_back (part_size[m], m);
     if (big.size () < 2)
       continue;
@@ -133,7 +135,7 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     // windows and walls 0.94-1.00, the slab's layer parts and a wall's clump of outliers 0.40-0.62.
     std::vector<std::vector<std::uint16_t>> shares (big.size ());
     for (const auto m : patches[l].members)
-      for (std::size_t b = 0; core[m] && b < big.size (); ++b)
+      for (std::size_t b = 0; core (m) && b < big.size (); ++b)
         if (big[b].second == root[m])
           shares[b].push_back (in_plane_share[m]);
     std::size_t surfaces = 0;
@@ -154,7 +156,7 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     for (const auto m : patches[l].members)
     {
       std::uint32_t p = kNoPatch;
-      for (std::uint32_t b = 0; core[m] && b < big.size (); ++b)
+      for (std::uint32_t b = 0; core (m) && b < big.size (); ++b)
         if (big[b].second == root[m])
           p = b;
       part[m] = p;
