@@ -128,6 +128,14 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
         big.emplace_back (part_size[m], m);
     if (big.size () < 2)
       continue;
+    // The entry of big holding member m's part (kNoPatch: m is no core sample, or its part is small).
+    const auto entryOf = [&] (std::uint32_t m) {
+      if (core (m))
+        for (std::uint32_t b = 0; b < big.size (); ++b)
+          if (big[b].second == root[m])
+            return b;
+      return kNoPatch;
+    };
     // Only pieces of surface count: a part whose median sample has at least three quarters of its
     // neighbours in the plane. Why: a plane of clutter (a layer of a slab of outliers) falls into
     // parts under the core test too, and split, its pieces were merged into the true plane as layers
@@ -135,9 +143,11 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     // windows and walls 0.94-1.00, the slab's layer parts and a wall's clump of outliers 0.40-0.62.
     std::vector<std::vector<std::uint16_t>> shares (big.size ());
     for (const auto m : patches[l].members)
-      for (std::size_t b = 0; core (m) && b < big.size (); ++b)
-        if (big[b].second == root[m])
-          shares[b].push_back (in_plane_share[m]);
+    {
+      const std::uint32_t b = entryOf (m);
+      if (b != kNoPatch)
+        shares[b].push_back (in_plane_share[m]);
+    }
     std::size_t surfaces = 0;
     for (std::size_t b = 0; b < big.size (); ++b)
     {
@@ -155,10 +165,7 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     std::vector<std::uint32_t> open;
     for (const auto m : patches[l].members)
     {
-      std::uint32_t p = kNoPatch;
-      for (std::uint32_t b = 0; core (m) && b < big.size (); ++b)
-        if (big[b].second == root[m])
-          p = b;
+      const std::uint32_t p = entryOf (m);
       part[m] = p;
       if (p == kNoPatch)
         open.push_back (m);

@@ -40,6 +40,24 @@ makeBridged (int bridge_samples)
   return b;
 }
 
+/** The bridge's samples given the plane's own normal: they pass its inlier test. */
+void
+bridgeOfInliers (Bridged& b)
+{
+  for (const auto i : b.bridge)
+    b.set.normals[i] = Eigen::Vector3f::UnitZ ();
+}
+
+/** The left square in plane 0, the right one in plane 1. */
+void
+expectSquaresApart (const Bridged& b, const std::vector<std::uint32_t>& labels)
+{
+  for (const auto i : b.left)
+    EXPECT_EQ (labels[i], 0u) << i;
+  for (const auto i : b.right)
+    EXPECT_EQ (labels[i], 1u) << i;
+}
+
 std::vector<PlanarPatch>
 onePlane (std::size_t n)
 {
@@ -57,10 +75,7 @@ TEST (ConnectedParts, PlaneBridgedByAnotherSurfaceIsSplitIntoItsParts)
   EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), patches, labels), 1u);
   ASSERT_EQ (patches.size (), 2u);
   // Equal parts: the one holding the lower sample keeps the plane's place.
-  for (const auto i : b.left)
-    EXPECT_EQ (labels[i], 0u) << i;
-  for (const auto i : b.right)
-    EXPECT_EQ (labels[i], 1u) << i;
+  expectSquaresApart (b, labels);
   // The bridge's ends follow the part they neighbour, its left end the left square, its right end
   // the right; its middle, more than one hop from either, is released.
   EXPECT_EQ (labels[b.bridge.front ()], 0u);
@@ -80,8 +95,7 @@ TEST (ConnectedParts, BridgeOfInliersKeepsThePlaneWhole)
 {
   // The same strip with the plane's own normal: inliers join the squares into one part.
   Bridged b = makeBridged (20);
-  for (const auto i : b.bridge)
-    b.set.normals[i] = Eigen::Vector3f::UnitZ ();
+  bridgeOfInliers (b);
   const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
   std::vector<PlanarPatch> patches = onePlane (b.set.size ());
   std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
@@ -98,8 +112,7 @@ TEST (ConnectedParts, CluttersWebOfInliersIsNoPart)
   // of their neighbours are outside the plane (outliers behind a facade, in its windows' band). They
   // are no core of a part, so the squares are two parts, and the web's middle is released.
   Bridged b = makeBridged (20);
-  for (const auto i : b.bridge)
-    b.set.normals[i] = Eigen::Vector3f::UnitZ ();
+  bridgeOfInliers (b);
   const std::size_t members = b.set.size ();
   for (std::size_t t = 3; t + 3 < b.bridge.size (); ++t) // the web's middle, clear of the squares
     for (int c = 0; c < 6; ++c)
@@ -115,10 +128,7 @@ TEST (ConnectedParts, CluttersWebOfInliersIsNoPart)
   std::vector<std::uint32_t> labels = labelSamples (b.set.size (), patches);
   EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), patches, labels), 1u);
   ASSERT_EQ (patches.size (), 2u);
-  for (const auto i : b.left)
-    EXPECT_EQ (labels[i], 0u) << i;
-  for (const auto i : b.right)
-    EXPECT_EQ (labels[i], 1u) << i;
+  expectSquaresApart (b, labels);
   EXPECT_EQ (labels[b.bridge[b.bridge.size () / 2]], kNoPatch);
   for (std::size_t i = members; i < b.set.size (); ++i)
     EXPECT_EQ (labels[i], kNoPatch) << i; // the clutter stays in no plane
@@ -160,6 +170,22 @@ TEST (ConnectedParts, PartsSmallerThanEpsilonStayWithThePlane)
   std::vector<std::uint32_t> labels = labelSamples (s.size (), patches);
   EXPECT_EQ (splitDisconnectedPlanes (s, g, rspd_test::unitParameters (1), patches, labels), 0u);
   EXPECT_EQ (patches[0].members.size (), s.size ());
+}
+
+TEST (ConnectedParts, NoSamplesOrNoPlaneChangesNothing)
+{
+  // Bad input: an empty set, and samples no plane holds (a scene where nothing was found).
+  PointSet empty;
+  std::vector<PlanarPatch> none;
+  std::vector<std::uint32_t> no_labels;
+  EXPECT_EQ (splitDisconnectedPlanes (empty, NeighborGraph (), rspd_test::unitParameters (1), none, no_labels), 0u);
+  EXPECT_TRUE (none.empty ());
+  const Bridged b = makeBridged (20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (b.set.points, 8);
+  std::vector<std::uint32_t> labels (b.set.size (), kNoPatch);
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), none, labels), 0u);
+  EXPECT_TRUE (none.empty ());
+  EXPECT_EQ (std::count (labels.begin (), labels.end (), kNoPatch), static_cast<std::ptrdiff_t> (b.set.size ()));
 }
 
 TEST (ConnectedParts, ResultDoesNotDependOnTheThreadCount)
