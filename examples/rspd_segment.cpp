@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -82,6 +82,8 @@ const char* const kHelp =
     "  --position-planes on|off  after the last assignment, what no plane holds is searched for\n"
     "                   planes by position alone (as noisy as the noisiest plane found at most, no\n"
     "                   bend beyond noise, no layer of a plane found) (default on; off = the paper)\n"
+    "  --position-surfaces on|off  where that search ended at a plane turned down, what is left\n"
+    "                   on a surface is searched again (default on; off = not)\n"
     "  --tail-odds on|off  the last assignment takes a plane's noise tail (3-4 robust sigma) only as\n"
     "                   far as its noise is likelier than the clutter measured beside it (default\n"
     "                   on; off = every plane's 4 sigma tail)\n"
@@ -251,6 +253,7 @@ struct Options
   bool rim_retest_until_stable = true;
   bool left_retest = true;
   bool position_planes = true;
+  bool position_surfaces = true;
   bool tail_odds = true;
   bool member_gaps = true;
   bool surrounding_clutter = true;
@@ -391,6 +394,8 @@ parseArguments (int argc, char** argv)
       o.left_retest = option.choice ("on", "off");
     else if (arg == "--position-planes")
       o.position_planes = option.choice ("on", "off");
+    else if (arg == "--position-surfaces")
+      o.position_surfaces = option.choice ("on", "off");
     else if (arg == "--tail-odds")
       o.tail_odds = option.choice ("on", "off");
     else if (arg == "--member-gaps")
@@ -653,6 +658,7 @@ run (const Options& o)
   seg.setRimRetestUntilStable (o.rim_retest_until_stable);
   seg.setLeftRimRetest (o.left_retest);
   seg.setPositionPlanes (o.position_planes);
+  seg.setPositionSurfaceParts (o.position_surfaces);
   seg.setTailOdds (o.tail_odds);
   seg.setMemberGaps (o.member_gaps);
   seg.setSurroundingClutter (o.surrounding_clutter);

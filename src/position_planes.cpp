@@ -89,6 +89,52 @@ collect (const PointSet& points, const NeighborGraph& graph, const std::vector<s
   std::sort (out.begin (), out.end ());
   return out;
 }
+
+/** Whether \a members (ascending) lie inside a surface: their median member has at least half of
+  * its k neighbours among them, or of the members but itself where they are fewer than k (a sample
+  * on a straight rim has half). A layer that a plane's band cuts from a volume of outliers has its
+  * neighbours all around it: medians 0.10-0.32 of k (debug prints, boxes with 10-20 % outliers),
+  * against 0.74-0.81 for the rough faces found there. */
+bool
+insideASurface (const NeighborGraph& graph, const std::vector<std::uint32_t>& members)
+{
+  std::vector<int> among;
+  among.reserve (members.size ());
+  for (const auto i : members)
+  {
+    int in = 0;
+    graph.forEachNeighbor (i, [&] (std::uint32_t j) { in += std::binary_search (members.begin (), members.end (), j); });
+    among.push_back (in);
+  }
+  auto mid = among.begin () + static_cast<std::ptrdiff_t> (among.size () / 2);
+  std::nth_element (among.begin (), mid, among.end ());
+  // Of as many as it could have: a plane of fewer than k + 1 members cannot give any member half of k.
+  const int possible = static_cast<int> (std::min<std::size_t> (graph.k (), members.size () - 1));
+  return 2 * *mid >= possible;
+}
+
+/** Whether sample \a i lies on a surface within \a reach: at least half of its neighbourhood (it and
+  * its k neighbours) lies within \a reach of the neighbourhood's plane, fitted by least squares and
+  * once more to the samples within reach of that fit (so that a few outliers among the neighbours do
+  * not tilt it). A sample of a volume of outliers has its neighbours all around it. */
+bool
+onASurface (const PointSet& points, const NeighborGraph& graph, std::uint32_t i, double reach,
+            std::vector<std::uint32_t>& hood, std::vector<std::uint32_t>& near)
+{
+  hood.assign (1, i);
+  graph.forEachNeighbor (i, [&] (std::uint32_t j) { hood.push_back (j); });
+  Plane plane;
+  for (int fit = 0; fit < 2; ++fit)
+  {
+    if (!fitPlane (points, fit == 0 ? hood : near, plane))
+      return false;
+    near.clear ();
+    for (const auto j : hood)
+      if (distance (points, j, plane.center, plane.normal) <= reach)
+        near.push_back (j);
+  }
+  return 2 * near.size () >= hood.size ();
+}
 } // namespace
 
 std::size_t
@@ -133,14 +179,16 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
 
   // stamp[i]: the part (1-based) sample i is still open in, 0 for none.
   std::vector<std::uint32_t> stamp (n, 0), seen (n, 0), covered (n, 0);
-  std::uint32_t visit = 0, search = 0;
+  std::uint32_t visit = 0, search = 0, part = 0;
   const std::size_t before = patches.size ();
-  for (std::size_t p = 0; p < parts.size (); ++p)
-  {
-    const std::uint32_t part = static_cast<std::uint32_t> (p + 1);
-    std::vector<std::uint32_t> open = parts[p];
+  // Searches one part. Returns the samples still open where a plane was turned down there (the part
+  // is left at it; \a go_on: it leaves the part instead, and the search goes on among the rest but
+  // where a surface bends), none where the part ran out of planes of ε.
+  const auto searchPart = [&] (std::vector<std::uint32_t> open, bool go_on) {
+    ++part;
     for (const auto i : open)
       stamp[i] = part;
+    bool turned_down = false;
     while (open.size () >= eps)
     {
       std::vector<std::uint32_t> best;
@@ -243,19 +291,29 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
         noise * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
       const PlaneCurvature c = measureCurvature (points, best);
       const bool flat = c.samples == 0 || c.share < chanceBendShare (c.samples, params.curved_turn_confidence);
-      if (!(sigma <= bound) || !flat || (c.samples > 0 && isTube (c, plane.mdp)) ||
+      const bool bent = !flat || (c.samples > 0 && isTube (c, plane.mdp));
+      if (!(sigma <= bound) || bent || (go_on && !insideASurface (graph, best)) ||
           isBandLayer (points, graph, params, patches, band, labels, plane) ||
           liesOnNeighbourPlane (points, graph, patches, labels, plane))
-        break;
-
-      const auto label = static_cast<std::uint32_t> (patches.size ());
-      for (const auto i : best)
       {
-        labels[i] = label;
-        stamp[i] = 0;
+        turned_down = true;
+        // A surface that bends is a curved one: the planes cut from it next would be its facets.
+        if (!go_on || bent)
+          break;
+        for (const auto i : best)
+          stamp[i] = 0;
       }
-      band.push_back (plane.mdp);
-      patches.push_back (std::move (plane));
+      else
+      {
+        const auto label = static_cast<std::uint32_t> (patches.size ());
+        for (const auto i : best)
+        {
+          labels[i] = label;
+          stamp[i] = 0;
+        }
+        band.push_back (plane.mdp);
+        patches.push_back (std::move (plane));
+      }
       std::vector<std::uint32_t> rest;
       rest.reserve (open.size () - best.size ());
       std::set_difference (open.begin (), open.end (), best.begin (), best.end (), std::back_inserter (rest));
@@ -263,7 +321,35 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
     }
     for (const auto i : open)
       stamp[i] = 0;
+    if (!turned_down)
+      open.clear ();
+    return open;
+  };
+  std::vector<std::uint32_t> left;
+  for (const auto& p : parts)
+  {
+    std::vector<std::uint32_t> rest = searchPart (p, false);
+    left.insert (left.end (), rest.begin (), rest.end ());
   }
+  if (!params.position_surface_parts)
+    return patches.size () - before;
+  // What the parts left at a plane turned down still hold on a surface, searched again: outliers
+  // join a scene's free samples into one part, whose best plane is a slab of them.
+  std::vector<char> surface (n, 0);
+  {
+    std::vector<std::uint32_t> hood, near;
+    for (const auto i : left)
+      surface[i] = labels[i] == kNoPatch && onASurface (points, graph, i, reach, hood, near);
+  }
+  DisjointSets surface_sets (n);
+  for (const auto i : left)
+    if (surface[i])
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        if (surface[j])
+          surface_sets.join (i, j);
+      });
+  for (const auto& p : surface_sets.groups (eps, [&] (std::uint32_t i) { return surface[i] != 0; }))
+    searchPart (p, true);
   return patches.size () - before;
 }
 

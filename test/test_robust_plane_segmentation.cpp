@@ -1004,6 +1004,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (NoisySeedGroups),
     RSPD_SWITCH (NoisyLoneSeeds),
     RSPD_SWITCH (NoisyGroupLadder),
+    RSPD_SWITCH (PositionSurfaceParts),
     RSPD_SWITCH (ThickCellsFollowNoisySeeds),
     RSPD_SWITCH (BendNoiseTest),
     RSPD_SWITCH (EdgeAwareNormals),

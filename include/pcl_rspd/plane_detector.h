@@ -353,6 +353,14 @@ struct DetectorParameters
     * four of six seeds, every cell of it failing T3 or noisier than every plane found. false = the
     * paper: what growth left stays unassigned but for the last assignment. */
   bool position_planes = true;
+  /** \brief Departure (surface parts, part of position_planes): where the search of a part ended at
+    * a plane turned down, what the part still holds on a surface (onASurface: half of a sample's
+    * neighbourhood within the pass's reach of its plane) is cut into parts again and searched once
+    * more, going on past the planes turned down there but for those inside no surface and those that
+    * bend. Outliers join a scene's free samples into one part whose best plane is a slab of them,
+    * and the faces beside it were never tried (boxes with 10 % outliers, layout 876: 30 of 32 planes
+    * without, 32 with). false = the part is left at its first plane turned down. */
+  bool position_surface_parts = true;
   /** \brief Departure (tail odds): the Tails rule takes a plane's noise tail only as far as its
     * Gaussian noise stays likelier than the clutter beside it: the clutter's density per unit |d|
     * is read from the samples no plane holds beside the plane at 4.5-6 σ (where its noise leaves

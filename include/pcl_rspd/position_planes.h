@@ -37,7 +37,15 @@ namespace rspd
   * (chanceBendShare at DetectorParameters::curved_turn_confidence, the curved check's), they are no
   * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
   * their own (liesOnNeighbourPlane); then the part is searched again without them. Where the best
-  * plane is turned down the part is left. The pass runs on one thread, in index order: the result
+  * plane is turned down the part is left. Then (DetectorParameters::position_surface_parts) what
+  * the parts left so still hold on a surface (a sample with half of its neighbourhood within 3
+  * \a noise of the neighbourhood's least-squares plane, fitted again to those within reach) is cut
+  * into parts again and searched once more, as above but for two rules: a plane turned down leaves
+  * the part and the search goes on among the rest, unless it bends (the strips of a curved surface
+  * that would follow measure flat); and a plane must lie inside a surface, its median member having
+  * half of its k neighbours among the members (or of the members but itself, where they are fewer).
+  * Why: outliers join a scene's free samples into one part, whose best plane is a slab of them, and
+  * the faces beside it were never tried. The pass runs on one thread, in index order: the result
   * does not depend on the thread count.
   *
   * Why by position: a small face bordered by others on most sides, sampled sparsely, has PCA normals

@@ -505,6 +505,15 @@ public:
   /** \brief Whether what is left is searched for planes by position. */
   bool
   getPositionPlanes () const { return params_.position_planes; }
+  /** \brief Surface parts (default true; false = a part is left at its first plane turned down):
+    * with position planes on, where a part's search ended at a plane turned down (a slab of
+    * outliers, say), the samples it still holds that lie on a surface are searched again. See
+    * pcl::rspd::DetectorParameters::position_surface_parts. */
+  void
+  setPositionSurfaceParts (bool enable);
+  /** \brief Whether what a part still holds on a surface is searched again. */
+  bool
+  getPositionSurfaceParts () const { return params_.position_surface_parts; }
 
   /** \brief Tail odds (default true; false = every plane's 4 σ tail): the last assignment takes a
     * plane's noise tail only as far as its noise stays likelier than the clutter measured beside it

@@ -355,6 +355,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setPositionPlanes (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceParts (bool enable)
+{
+  params_.position_surface_parts = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setTailOdds (bool enable)
 {
   params_.tail_odds = enable;
