@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -84,6 +84,10 @@ const char* const kHelp =
     "                   bend beyond noise, no layer of a plane found) (default on; off = the paper)\n"
     "  --position-surfaces on|off  where that search ended at a plane turned down, what is left\n"
     "                   on a surface is searched again (default on; off = not)\n"
+    "  --position-normals on|off  there, a member's neighbourhood plane must be nearer parallel to\n"
+    "                   its plane than perpendicular (default on; off = by position alone)\n"
+    "  --position-ladder on|off  there, planes up to twice as noisy as the noisiest kept, step by\n"
+    "                   step while a step keeps a noisier one (default on; off = one step)\n"
     "  --tail-odds on|off  the last assignment takes a plane's noise tail (3-4 robust sigma) only as\n"
     "                   far as its noise is likelier than the clutter measured beside it (default\n"
     "                   on; off = every plane's 4 sigma tail)\n"
@@ -254,6 +258,8 @@ struct Options
   bool left_retest = true;
   bool position_planes = true;
   bool position_surfaces = true;
+  bool position_normals = true;
+  bool position_ladder = true;
   bool tail_odds = true;
   bool member_gaps = true;
   bool surrounding_clutter = true;
@@ -396,6 +402,10 @@ parseArguments (int argc, char** argv)
       o.position_planes = option.choice ("on", "off");
     else if (arg == "--position-surfaces")
       o.position_surfaces = option.choice ("on", "off");
+    else if (arg == "--position-normals")
+      o.position_normals = option.choice ("on", "off");
+    else if (arg == "--position-ladder")
+      o.position_ladder = option.choice ("on", "off");
     else if (arg == "--tail-odds")
       o.tail_odds = option.choice ("on", "off");
     else if (arg == "--member-gaps")
@@ -659,6 +669,8 @@ run (const Options& o)
   seg.setLeftRimRetest (o.left_retest);
   seg.setPositionPlanes (o.position_planes);
   seg.setPositionSurfaceParts (o.position_surfaces);
+  seg.setPositionSurfaceNormals (o.position_normals);
+  seg.setPositionSurfaceLadder (o.position_ladder);
   seg.setTailOdds (o.tail_odds);
   seg.setMemberGaps (o.member_gaps);
   seg.setSurroundingClutter (o.surrounding_clutter);

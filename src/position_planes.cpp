@@ -41,6 +41,15 @@ constexpr double kRobustSigmaError = 1.166;
   * layer and no strip of a neighbour. */
 constexpr double kNoiseBoundErrors = 2.0;
 
+/** A sample lies on a surface if half of its neighbourhood lies within this share of the
+  * neighbourhood's radius of its plane (and within the pass's reach): of a uniform volume of
+  * outliers, half lies within 0.35 of the radius of any plane through the middle of a ball. */
+constexpr double kSurfaceRadiusShare = 0.25;
+/** A member of a plane searched again must have its neighbourhood's plane nearer parallel to it than
+  * perpendicular (|cos| >= cos 45°): the strip of a face across an edge, within reach of the plane,
+  * is not. */
+constexpr double kSameFaceCos = 0.70710678118654752;
+
 struct Plane
 {
   Eigen::Vector3d center = Eigen::Vector3d::Zero ();
@@ -63,14 +72,16 @@ fitPlane (const PointSet& points, const std::vector<std::uint32_t>& samples, Pla
 }
 
 /** The samples of the part (stamp[i] == part) connected to \a start through samples within \a band
-  * of \a plane, in ascending order. */
+  * of \a plane (and, given \a local_normals, whose neighbourhood's plane is nearer parallel to it than
+  * perpendicular), in ascending order. */
 std::vector<std::uint32_t>
 collect (const PointSet& points, const NeighborGraph& graph, const std::vector<std::uint32_t>& stamp,
          std::uint32_t part, std::uint32_t start, const Plane& plane, double band, std::vector<std::uint32_t>& seen,
-         std::uint32_t& visit)
+         std::uint32_t& visit, const std::vector<Eigen::Vector3d>* local_normals = nullptr)
 {
   const auto near = [&] (std::uint32_t i) {
-    return distance (points, i, plane.center, plane.normal) <= band;
+    return distance (points, i, plane.center, plane.normal) <= band &&
+           (local_normals == nullptr || std::abs ((*local_normals)[i].dot (plane.normal)) >= kSameFaceCos);
   };
   std::vector<std::uint32_t> out;
   if (!near (start))
@@ -113,27 +124,46 @@ insideASurface (const NeighborGraph& graph, const std::vector<std::uint32_t>& me
   return 2 * *mid >= possible;
 }
 
-/** Whether sample \a i lies on a surface within \a reach: at least half of its neighbourhood (it and
-  * its k neighbours) lies within \a reach of the neighbourhood's plane, fitted by least squares and
-  * once more to the samples within reach of that fit (so that a few outliers among the neighbours do
-  * not tilt it). A sample of a volume of outliers has its neighbours all around it. */
-bool
-onASurface (const PointSet& points, const NeighborGraph& graph, std::uint32_t i, double reach,
-            std::vector<std::uint32_t>& hood, std::vector<std::uint32_t>& near)
+/** The surface around one sample: its neighbourhood's plane and how thin the neighbourhood is about it. */
+struct LocalSurface
 {
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero (); ///< unit normal of the plane (zero: none)
+  double median = HUGE_VAL;                          ///< median |d| of the neighbourhood from it
+  double radius = 0.0;                               ///< distance to the farthest neighbour
+};
+
+/** The plane of sample \a i's neighbourhood (it and its k neighbours): fitted by least squares, then
+  * again to the half of them nearest to that fit, so that outliers among the neighbours (up to half)
+  * do not tilt it. */
+LocalSurface
+localSurface (const PointSet& points, const NeighborGraph& graph, std::uint32_t i, std::vector<std::uint32_t>& hood,
+              std::vector<std::pair<double, std::uint32_t>>& by_distance)
+{
+  LocalSurface out;
   hood.assign (1, i);
   graph.forEachNeighbor (i, [&] (std::uint32_t j) { hood.push_back (j); });
   Plane plane;
-  for (int fit = 0; fit < 2; ++fit)
+  if (!fitPlane (points, hood, plane))
+    return out;
+  by_distance.clear ();
+  for (const auto j : hood)
   {
-    if (!fitPlane (points, fit == 0 ? hood : near, plane))
-      return false;
-    near.clear ();
-    for (const auto j : hood)
-      if (distance (points, j, plane.center, plane.normal) <= reach)
-        near.push_back (j);
+    by_distance.emplace_back (distance (points, j, plane.center, plane.normal), j);
+    out.radius = std::max (out.radius, (points.points[j] - points.points[i]).cast<double> ().norm ());
   }
-  return 2 * near.size () >= hood.size ();
+  const auto half = by_distance.begin () + static_cast<std::ptrdiff_t> ((by_distance.size () + 1) / 2);
+  std::nth_element (by_distance.begin (), half, by_distance.end ());
+  std::vector<std::uint32_t> nearest;
+  for (auto it = by_distance.begin (); it != half; ++it)
+    nearest.push_back (it->second);
+  if (!fitPlane (points, nearest, plane))
+    return out;
+  std::vector<double> d;
+  for (const auto j : hood)
+    d.push_back (distance (points, j, plane.center, plane.normal));
+  out.median = medianInPlace (d);
+  out.normal = plane.normal;
+  return out;
 }
 } // namespace
 
@@ -146,7 +176,11 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
   const std::size_t eps = std::max<std::size_t> (params.min_patch_size, 3);
   if (!(noise > 0.0) || !std::isfinite (noise) || n == 0)
     return 0;
-  const double reach = kPositionBandSigmas * noise;
+  double reach = kPositionBandSigmas * noise;
+  double level = noise; // the noise the search allows (a ladder step may raise it)
+  double noisiest_kept = 0.0;
+  double base = noise;
+  std::vector<Eigen::Vector3d> local_normals; // per sample searched again, its neighbourhood's plane
 
   // Open: no plane holds the sample, and it lies in the noise band of no plane a neighbour holds
   // (a plane's tail beside its rim would curl a face's quadric there).
@@ -211,7 +245,8 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
           continue;
         for (int round = 0; round < kFitRounds; ++round)
         {
-          std::vector<std::uint32_t> next = collect (points, graph, stamp, part, start, plane, reach, seen, visit);
+          std::vector<std::uint32_t> next = collect (points, graph, stamp, part, start, plane, reach, seen, visit,
+                                                     go_on && params.position_surface_normals ? &local_normals : nullptr);
           const bool settled = next == members;
           members = std::move (next);
           if (settled || !fitPlane (points, members, plane))
@@ -288,11 +323,16 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       // chance, no tube, no layer of a plane found and no strip that lies on a neighbouring plane.
       const double sigma = kMadScale * ds.median;
       const double bound =
-        noise * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
+        level * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
       const PlaneCurvature c = measureCurvature (points, best);
       const bool flat = c.samples == 0 || c.share < chanceBendShare (c.samples, params.curved_turn_confidence);
       const bool bent = !flat || (c.samples > 0 && isTube (c, plane.mdp));
-      if (!(sigma <= bound) || bent || (go_on && !insideASurface (graph, best)) ||
+      // On a ladder's step, a plane holds more than k samples: with fewer, no member's neighbourhood
+      // lies in it, and the rough surface it claims to be is read from neighbourhoods of others (the
+      // box corner in the paper's assignment mode: 24 samples of the bands along its edges, tilted
+      // 20° from both faces, as noisy as a step above the planes found allows).
+      const bool too_small_for_step = level > noise && best.size () <= static_cast<std::size_t> (graph.k ());
+      if (!(sigma <= bound) || bent || too_small_for_step || (go_on && !insideASurface (graph, best)) ||
           isBandLayer (points, graph, params, patches, band, labels, plane) ||
           liesOnNeighbourPlane (points, graph, patches, labels, plane))
       {
@@ -311,6 +351,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
           labels[i] = label;
           stamp[i] = 0;
         }
+        noisiest_kept = std::max (noisiest_kept, sigma);
         band.push_back (plane.mdp);
         patches.push_back (std::move (plane));
       }
@@ -331,25 +372,48 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
     std::vector<std::uint32_t> rest = searchPart (p, false);
     left.insert (left.end (), rest.begin (), rest.end ());
   }
-  if (!params.position_surface_parts)
+  if (!params.position_surface_parts || left.empty ())
     return patches.size () - before;
   // What the parts left at a plane turned down still hold on a surface, searched again: outliers
   // join a scene's free samples into one part, whose best plane is a slab of them.
-  std::vector<char> surface (n, 0);
+  std::vector<LocalSurface> local (n);
+  local_normals.assign (n, Eigen::Vector3d::Zero ());
   {
-    std::vector<std::uint32_t> hood, near;
+    std::vector<std::uint32_t> hood;
+    std::vector<std::pair<double, std::uint32_t>> by_distance;
     for (const auto i : left)
-      surface[i] = labels[i] == kNoPatch && onASurface (points, graph, i, reach, hood, near);
+    {
+      local[i] = localSurface (points, graph, i, hood, by_distance);
+      local_normals[i] = local[i].normal;
+    }
   }
-  DisjointSets surface_sets (n);
-  for (const auto i : left)
-    if (surface[i])
-      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
-        if (surface[j])
-          surface_sets.join (i, j);
-      });
-  for (const auto& p : surface_sets.groups (eps, [&] (std::uint32_t i) { return surface[i] != 0; }))
-    searchPart (p, true);
+  for (int step = 0;; ++step)
+  {
+    if (step > 0)
+    {
+      // A step of the noise ladder (as the small-plane pass's noisy seeds climb theirs): planes up
+      // to noisy_group_ratio times the noisiest plane kept, among what is still left.
+      base = std::max (base, noisiest_kept);
+      level = params.noisy_group_ratio * base;
+      reach = kPositionBandSigmas * level;
+    }
+    noisiest_kept = 0.0;
+    std::vector<char> surface (n, 0);
+    for (const auto i : left)
+      surface[i] = labels[i] == kNoPatch && local[i].median <= std::min (reach, kSurfaceRadiusShare * local[i].radius);
+    DisjointSets surface_sets (n);
+    for (const auto i : left)
+      if (surface[i])
+        graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+          if (surface[j])
+            surface_sets.join (i, j);
+        });
+    for (const auto& p : surface_sets.groups (eps, [&] (std::uint32_t i) { return surface[i] != 0; }))
+      searchPart (p, true);
+    // The first step is always tried; the next only once a step kept a plane noisier than the last.
+    if (!params.position_surface_ladder || (step > 0 && !(noisiest_kept > base)))
+      break;
+  }
   return patches.size () - before;
 }
 

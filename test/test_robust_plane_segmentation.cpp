@@ -1005,6 +1005,8 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (NoisyLoneSeeds),
     RSPD_SWITCH (NoisyGroupLadder),
     RSPD_SWITCH (PositionSurfaceParts),
+    RSPD_SWITCH (PositionSurfaceNormals),
+    RSPD_SWITCH (PositionSurfaceLadder),
     RSPD_SWITCH (ThickCellsFollowNoisySeeds),
     RSPD_SWITCH (BendNoiseTest),
     RSPD_SWITCH (EdgeAwareNormals),

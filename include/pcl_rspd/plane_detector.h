@@ -354,13 +354,30 @@ struct DetectorParameters
     * paper: what growth left stays unassigned but for the last assignment. */
   bool position_planes = true;
   /** \brief Departure (surface parts, part of position_planes): where the search of a part ended at
-    * a plane turned down, what the part still holds on a surface (onASurface: half of a sample's
-    * neighbourhood within the pass's reach of its plane) is cut into parts again and searched once
+    * a plane turned down, what the part still holds on a surface (half of a sample's neighbourhood
+    * within the pass's reach, and within a quarter of the neighbourhood's radius, of the
+    * neighbourhood's plane) is cut into parts again and searched once
     * more, going on past the planes turned down there but for those inside no surface and those that
     * bend. Outliers join a scene's free samples into one part whose best plane is a slab of them,
     * and the faces beside it were never tried (boxes with 10 % outliers, layout 876: 30 of 32 planes
     * without, 32 with). false = the part is left at its first plane turned down. */
   bool position_surface_parts = true;
+  /** \brief Departure (part of position_surface_parts): a member of a plane searched again must have
+    * its neighbourhood's plane (least squares, then again on the half nearest to it) nearer parallel
+    * to the plane than perpendicular. Where a face's noise is large against its size, the samples of
+    * the faces beside it within the pass's reach are strips along its rims, all on one side of its
+    * plane, and its quadric bends: the search ended there (boxes with 10 % outliers, layout 457: 24 of
+    * 32 planes without, 32 with). false = by position alone. */
+  bool position_surface_normals = true;
+  /** \brief Departure (noise ladder of the surface parts, part of position_surface_parts): once the
+    * surface parts are searched, what is still left is searched again for planes up to
+    * noisy_group_ratio times as noisy as the noisiest plane kept (its reach as wide), step by step
+    * while a step keeps a plane noisier than the last. Rough surfaces each a little rougher than the
+    * last are found whichever the first passes happened to seed (boxes with 20 % outliers, layout
+    * 725, boxes 3 to 15 times as rough as the floor: 12 of 32 planes without, 31 with). On a step,
+    * a plane holds more than k samples (with fewer, no member's neighbourhood lies in it).
+    * false = the noisiest plane found bounds every plane by position. */
+  bool position_surface_ladder = true;
   /** \brief Departure (tail odds): the Tails rule takes a plane's noise tail only as far as its
     * Gaussian noise stays likelier than the clutter beside it: the clutter's density per unit |d|
     * is read from the samples no plane holds beside the plane at 4.5-6 σ (where its noise leaves

@@ -38,14 +38,22 @@ namespace rspd
   * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
   * their own (liesOnNeighbourPlane); then the part is searched again without them. Where the best
   * plane is turned down the part is left. Then (DetectorParameters::position_surface_parts) what
-  * the parts left so still hold on a surface (a sample with half of its neighbourhood within 3
-  * \a noise of the neighbourhood's least-squares plane, fitted again to those within reach) is cut
-  * into parts again and searched once more, as above but for two rules: a plane turned down leaves
-  * the part and the search goes on among the rest, unless it bends (the strips of a curved surface
-  * that would follow measure flat); and a plane must lie inside a surface, its median member having
-  * half of its k neighbours among the members (or of the members but itself, where they are fewer).
+  * the parts left so still hold on a surface (a sample with half of its neighbourhood, it and its k
+  * neighbours, within 3 \a noise and within a quarter of the neighbourhood's radius of the
+  * neighbourhood's plane: least squares, then again on the half of it nearest to that fit) is cut
+  * into parts again and searched once more, as above but for three rules: a plane turned down
+  * leaves the part and the search goes on among the rest, unless it bends (the strips of a curved
+  * surface that would follow measure flat); a plane must lie inside a surface, its median member
+  * having half of its k neighbours among the members (or of the members but itself, where they are
+  * fewer); and (DetectorParameters::position_surface_normals) a member's neighbourhood plane must be
+  * nearer parallel to the plane than perpendicular (the strips of the faces beside a noisy face
+  * would bend it). Then (DetectorParameters::position_surface_ladder) what is still left is
+  * searched so again for planes up to noisy_group_ratio times as noisy as the noisiest plane kept,
+  * with a reach as much wider, step by step while a step keeps a plane noisier than the last; there
+  * a plane holds more than k samples.
   * Why: outliers join a scene's free samples into one part, whose best plane is a slab of them, and
-  * the faces beside it were never tried. The pass runs on one thread, in index order: the result
+  * the faces beside it were never tried; and rough faces among outliers are seeded by no earlier
+  * pass, each bounded by the planes found. The pass runs on one thread, in index order: the result
   * does not depend on the thread count.
   *
   * Why by position: a small face bordered by others on most sides, sampled sparsely, has PCA normals

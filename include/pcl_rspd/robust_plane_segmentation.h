@@ -514,6 +514,24 @@ public:
   /** \brief Whether what a part still holds on a surface is searched again. */
   bool
   getPositionSurfaceParts () const { return params_.position_surface_parts; }
+  /** \brief Same-face members (default true; false = by position alone): with surface parts on, a
+    * member of a plane searched again must have its neighbourhood's plane nearer parallel to the
+    * plane than perpendicular, so that the strips of the faces beside it do not bend it. See
+    * pcl::rspd::DetectorParameters::position_surface_normals. */
+  void
+  setPositionSurfaceNormals (bool enable);
+  /** \brief Whether members of planes searched again must face their plane. */
+  bool
+  getPositionSurfaceNormals () const { return params_.position_surface_normals; }
+  /** \brief Noise ladder of the surface parts (default true; false = the noisiest plane found bounds
+    * every plane by position): what is still left is searched again for planes up to twice as
+    * noisy as the noisiest plane kept, step by step while a step keeps a noisier one. See
+    * pcl::rspd::DetectorParameters::position_surface_ladder. */
+  void
+  setPositionSurfaceLadder (bool enable);
+  /** \brief Whether the surface parts climb a noise ladder. */
+  bool
+  getPositionSurfaceLadder () const { return params_.position_surface_ladder; }
 
   /** \brief Tail odds (default true; false = every plane's 4 σ tail): the last assignment takes a
     * plane's noise tail only as far as its noise stays likelier than the clutter measured beside it

@@ -362,6 +362,20 @@ RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceParts (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceNormals (bool enable)
+{
+  params_.position_surface_normals = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceLadder (bool enable)
+{
+  params_.position_surface_ladder = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setTailOdds (bool enable)
 {
   params_.tail_odds = enable;
