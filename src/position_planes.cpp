@@ -71,17 +71,25 @@ fitPlane (const PointSet& points, const std::vector<std::uint32_t>& samples, Pla
   return leastSquaresPlane (points, samples, {}, Eigen::Vector3d::Zero (), plane.center, plane.normal);
 }
 
+/** The surface around one sample: its neighbourhood's plane and how thin the neighbourhood is about it. */
+struct LocalSurface
+{
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero (); ///< unit normal of the plane (zero: none)
+  double median = HUGE_VAL;                          ///< median |d| of the neighbourhood from it
+  double radius = 0.0;                               ///< distance to the farthest neighbour
+};
+
 /** The samples of the part (stamp[i] == part) connected to \a start through samples within \a band
-  * of \a plane (and, given \a local_normals, whose neighbourhood's plane is nearer parallel to it than
+  * of \a plane (and, given \a local, whose neighbourhood's plane is nearer parallel to it than
   * perpendicular), in ascending order. */
 std::vector<std::uint32_t>
 collect (const PointSet& points, const NeighborGraph& graph, const std::vector<std::uint32_t>& stamp,
          std::uint32_t part, std::uint32_t start, const Plane& plane, double band, std::vector<std::uint32_t>& seen,
-         std::uint32_t& visit, const std::vector<Eigen::Vector3d>* local_normals = nullptr)
+         std::uint32_t& visit, const std::vector<LocalSurface>* local = nullptr)
 {
   const auto near = [&] (std::uint32_t i) {
     return distance (points, i, plane.center, plane.normal) <= band &&
-           (local_normals == nullptr || std::abs ((*local_normals)[i].dot (plane.normal)) >= kSameFaceCos);
+           (local == nullptr || std::abs ((*local)[i].normal.dot (plane.normal)) >= kSameFaceCos);
   };
   std::vector<std::uint32_t> out;
   if (!near (start))
@@ -99,6 +107,20 @@ collect (const PointSet& points, const NeighborGraph& graph, const std::vector<s
     });
   std::sort (out.begin (), out.end ());
   return out;
+}
+
+/** The parts of ε samples or more that the k-NN graph joins among the samples \a in marks. */
+std::vector<std::vector<std::uint32_t>>
+partsOf (const NeighborGraph& graph, const std::vector<char>& in, std::size_t eps)
+{
+  DisjointSets sets (in.size ());
+  for (std::uint32_t i = 0; i < in.size (); ++i)
+    if (in[i])
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+        if (in[j])
+          sets.join (i, j);
+      });
+  return sets.groups (eps, [&] (std::uint32_t i) { return in[i] != 0; });
 }
 
 /** Whether \a members (ascending) lie inside a surface: their median member has at least half of
@@ -124,22 +146,23 @@ insideASurface (const NeighborGraph& graph, const std::vector<std::uint32_t>& me
   return 2 * *mid >= possible;
 }
 
-/** The surface around one sample: its neighbourhood's plane and how thin the neighbourhood is about it. */
-struct LocalSurface
+/** Buffers localSurface reuses from one sample to the next. */
+struct LocalScratch
 {
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero (); ///< unit normal of the plane (zero: none)
-  double median = HUGE_VAL;                          ///< median |d| of the neighbourhood from it
-  double radius = 0.0;                               ///< distance to the farthest neighbour
+  std::vector<std::uint32_t> hood, nearest;
+  std::vector<std::pair<double, std::uint32_t>> by_distance;
+  std::vector<double> d;
 };
 
 /** The plane of sample \a i's neighbourhood (it and its k neighbours): fitted by least squares, then
   * again to the half of them nearest to that fit, so that outliers among the neighbours (up to half)
   * do not tilt it. */
 LocalSurface
-localSurface (const PointSet& points, const NeighborGraph& graph, std::uint32_t i, std::vector<std::uint32_t>& hood,
-              std::vector<std::pair<double, std::uint32_t>>& by_distance)
+localSurface (const PointSet& points, const NeighborGraph& graph, std::uint32_t i, LocalScratch& scratch)
 {
   LocalSurface out;
+  auto& hood = scratch.hood;
+  auto& by_distance = scratch.by_distance;
   hood.assign (1, i);
   graph.forEachNeighbor (i, [&] (std::uint32_t j) { hood.push_back (j); });
   Plane plane;
@@ -153,15 +176,15 @@ localSurface (const PointSet& points, const NeighborGraph& graph, std::uint32_t 
   }
   const auto half = by_distance.begin () + static_cast<std::ptrdiff_t> ((by_distance.size () + 1) / 2);
   std::nth_element (by_distance.begin (), half, by_distance.end ());
-  std::vector<std::uint32_t> nearest;
+  scratch.nearest.clear ();
   for (auto it = by_distance.begin (); it != half; ++it)
-    nearest.push_back (it->second);
-  if (!fitPlane (points, nearest, plane))
+    scratch.nearest.push_back (it->second);
+  if (!fitPlane (points, scratch.nearest, plane))
     return out;
-  std::vector<double> d;
+  scratch.d.clear ();
   for (const auto j : hood)
-    d.push_back (distance (points, j, plane.center, plane.normal));
-  out.median = medianInPlace (d);
+    scratch.d.push_back (distance (points, j, plane.center, plane.normal));
+  out.median = medianInPlace (scratch.d);
   out.normal = plane.normal;
   return out;
 }
@@ -179,8 +202,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
   double reach = kPositionBandSigmas * noise;
   double level = noise; // the noise the search allows (a ladder step may raise it)
   double noisiest_kept = 0.0;
-  double base = noise;
-  std::vector<Eigen::Vector3d> local_normals; // per sample searched again, its neighbourhood's plane
+  std::vector<LocalSurface> local; // per sample searched again (surface parts), its neighbourhood's plane
 
   // Open: no plane holds the sample, and it lies in the noise band of no plane a neighbour holds
   // (a plane's tail beside its rim would curl a face's quadric there).
@@ -199,15 +221,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
     free[i] = !in_band;
   }
   // The parts of what is open, joined along the k-NN graph.
-  DisjointSets sets (n);
-  for (std::uint32_t i = 0; i < n; ++i)
-    if (free[i])
-      graph.forEachNeighbor (i, [&] (std::uint32_t j) {
-        if (free[j])
-          sets.join (i, j);
-      });
-  const std::vector<std::vector<std::uint32_t>> parts =
-    sets.groups (eps, [&] (std::uint32_t i) { return free[i] != 0; });
+  const std::vector<std::vector<std::uint32_t>> parts = partsOf (graph, free, eps);
   if (parts.empty ())
     return 0;
 
@@ -246,7 +260,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
         for (int round = 0; round < kFitRounds; ++round)
         {
           std::vector<std::uint32_t> next = collect (points, graph, stamp, part, start, plane, reach, seen, visit,
-                                                     go_on && params.position_surface_normals ? &local_normals : nullptr);
+                                                     go_on && params.position_surface_normals ? &local : nullptr);
           const bool settled = next == members;
           members = std::move (next);
           if (settled || !fitPlane (points, members, plane))
@@ -376,17 +390,13 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
     return patches.size () - before;
   // What the parts left at a plane turned down still hold on a surface, searched again: outliers
   // join a scene's free samples into one part, whose best plane is a slab of them.
-  std::vector<LocalSurface> local (n);
-  local_normals.assign (n, Eigen::Vector3d::Zero ());
+  local.resize (n);
   {
-    std::vector<std::uint32_t> hood;
-    std::vector<std::pair<double, std::uint32_t>> by_distance;
+    LocalScratch scratch;
     for (const auto i : left)
-    {
-      local[i] = localSurface (points, graph, i, hood, by_distance);
-      local_normals[i] = local[i].normal;
-    }
+      local[i] = localSurface (points, graph, i, scratch);
   }
+  double base = noise; // the noise the ladder's next step doubles
   for (int step = 0;; ++step)
   {
     if (step > 0)
@@ -401,14 +411,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
     std::vector<char> surface (n, 0);
     for (const auto i : left)
       surface[i] = labels[i] == kNoPatch && local[i].median <= std::min (reach, kSurfaceRadiusShare * local[i].radius);
-    DisjointSets surface_sets (n);
-    for (const auto i : left)
-      if (surface[i])
-        graph.forEachNeighbor (i, [&] (std::uint32_t j) {
-          if (surface[j])
-            surface_sets.join (i, j);
-        });
-    for (const auto& p : surface_sets.groups (eps, [&] (std::uint32_t i) { return surface[i] != 0; }))
+    for (const auto& p : partsOf (graph, surface, eps))
       searchPart (p, true);
     // The first step is always tried; the next only once a step kept a plane noisier than the last.
     if (!params.position_surface_ladder || (step > 0 && !(noisiest_kept > base)))
