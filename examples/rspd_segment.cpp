@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -150,6 +150,9 @@ const char* const kHelp =
     "  --layer-merge on|off  a plane lying among a larger plane's points, within its noise band\n"
     "                   across its extent, is merged into it: two layers of one noisy face (default\n"
     "                   on; off = they stay apart)\n"
+    "  --layer-steps on|off  with the layer merge, a plane whose points' neighbourhoods average\n"
+    "                   off its joint plane with the larger one (a window recessed within its\n"
+    "                   wall's noise band) is a step, not a layer (default on; off = merged)\n"
     "  --step-split on|off  a region of a plane lying parallel to the rest, offset by a step\n"
     "                   within its noise band (a door 2 cm proud of a wall), is split off as a\n"
     "                   plane (default on; off = it stays in its plane)\n"
@@ -282,6 +285,7 @@ struct Options
   bool connected_parts = true;
   bool bent_split = true;
   bool layer_merge = true;
+  bool layer_steps = true;
   bool step_split = true;
   bool across_steps = true;
   bool bent_side_mnd = true;
@@ -458,6 +462,8 @@ parseArguments (int argc, char** argv)
       o.bent_split = option.choice ("on", "off");
     else if (arg == "--layer-merge")
       o.layer_merge = option.choice ("on", "off");
+    else if (arg == "--layer-steps")
+      o.layer_steps = option.choice ("on", "off");
     else if (arg == "--step-split")
       o.step_split = option.choice ("on", "off");
     else if (arg == "--across-steps")
@@ -696,6 +702,7 @@ run (const Options& o)
   seg.setConnectedParts (o.connected_parts);
   seg.setBentPlaneSplit (o.bent_split);
   seg.setLayerMerge (o.layer_merge);
+  seg.setLayerSteps (o.layer_steps);
   seg.setStepSplit (o.step_split);
   seg.setAcrossStepCheck (o.across_steps);
   seg.setBentSideParentMnd (o.bent_side_mnd);

@@ -394,3 +394,42 @@ TEST (BandLayerMerge, PlaneBesideALargerOneStays)
   EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
   EXPECT_EQ (s.planes.size (), 2u);
 }
+
+TEST (BandLayerMerge, AWindowRecessedWithinItsWallsBandIsAStepNotALayer)
+{
+  // A 1 x 1 m wall (z = 0, noise 5 mm) with a 0.4 x 0.4 m window 1 cm deep (2 σ) in its middle, on
+  // one 40 x 40 grid. The wall's plane holds the window samples nearer than 5 mm, as a wall's band
+  // takes the near half of a window's; the window's plane holds the rest. Every window member has a
+  // wall neighbour and lies within the wall's band, but the window's samples average 1 cm off the
+  // two planes' joint plane: a step, kept apart (DetectorParameters::layer_steps); without the rule
+  // the layer merge joins it to the wall.
+  const auto scene = [] {
+    LayerScene s;
+    std::mt19937 rng (11);
+    std::normal_distribution<float> g (0.0f, 0.005f);
+    std::vector<std::uint32_t> wall, window;
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 40; ++j)
+      {
+        const float x = (i + 0.5f) / 40.0f, y = (j + 0.5f) / 40.0f;
+        const bool inside = x > 0.3f && x < 0.7f && y > 0.3f && y < 0.7f;
+        const float z = (inside ? 0.01f : 0.0f) + g (rng);
+        const auto index = static_cast<std::uint32_t> (s.set.points.size ());
+        s.set.points.emplace_back (x, y, z);
+        s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+        s.set.input_indices.push_back (static_cast<pcl::index_t> (index));
+        (inside && z >= 0.005f ? window : wall).push_back (index);
+      }
+    s.planes = {estimatedPatch (s.set, wall), estimatedPatch (s.set, window)};
+    s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
+    return s;
+  };
+  LayerScene s = scene ();
+  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
+  EXPECT_EQ (s.planes.size (), 2u);
+  LayerScene off = scene ();
+  DetectorParameters p = parameters ();
+  p.layer_steps = false;
+  EXPECT_EQ (mergeBandLayers (off.set, off.graph, p, bandsOf (off), off.planes, labelsOf (off)), 1u);
+  EXPECT_EQ (off.planes.size (), 1u);
+}

@@ -974,6 +974,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (ConnectedParts),
     RSPD_SWITCH (BentPlaneSplit),
     RSPD_SWITCH (LayerMerge),
+    RSPD_SWITCH (LayerSteps),
     RSPD_SWITCH (StepSplit),
     RSPD_SWITCH (AcrossStepCheck),
     RSPD_SWITCH (EdgeSides),

@@ -432,7 +432,7 @@ TEST (SegmentCli, EverySwitchAndValueIsAccepted)
     "--coplanar-merge", "--left-retest", "--position-planes", "--tail-odds", "--surrounding-clutter", "--member-gaps", "--release",
     "--released-planes", "--edge-sides", "--edge-corners", "--edge-wedges", "--thick-join", "--small-thick-join",
     "--noisy-groups", "--noisy-lone", "--noisy-ladder", "--thick-follow", "--step-sides", "--support",
-    "--final-refit", "--connected-parts", "--bent-split", "--layer-merge", "--step-split", "--across-steps",
+    "--final-refit", "--connected-parts", "--bent-split", "--layer-merge", "--layer-steps", "--step-split", "--across-steps",
     "--bent-side-mnd", "--edge-normals", "--shifted-grid", "--bounded-reestimate", "--noisy-bent-split",
     "--volume-layers", "--final-volume-layers", "--in-band-layers", "--flat-layers", "--small-completion", "--curved-check",
     "--late-curved", "--curved-turn", "--curved-fold-sides", "--tube-check", "--curved-parts", "--hinge-normals",

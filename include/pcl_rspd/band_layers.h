@@ -80,7 +80,11 @@ liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const 
   * A layer of B: at least half of A's members have a graph neighbour held by B (A lies among B's
   * samples, not beside them), M2 holds (normalsCompatible), the median distance of A's members to
   * B's plane is within B's band, and A's tilt against B across its extent (sine of the angle times
-  * the farthest member's distance from A's centre in B's plane) is within B's band too.
+  * the farthest member's distance from A's centre in B's plane) is within B's band too; and, with
+  * DetectorParameters::layer_steps, A is no step beside B: its members' neighbourhoods (their
+  * samples held by A or B) average, at the median member, within half a robust σ of A's and B's
+  * joint least-squares plane (a window recessed within its wall's band, whose near samples the wall
+  * holds, has a wall neighbour at every member but stands 2 σ off that plane).
   *
   * Why: two seeds of one noisy face grow at once, each takes the samples on its side of the face's
   * noise band, and re-estimation (Sec. 3.5) centres each on its own side: two interleaved planes a

@@ -505,6 +505,14 @@ struct DetectorParameters
     * M3 and M4 to join them (the room's cabinet front: 1,208 and 621 samples 4.6 mm apart, MDPs 5.3
     * and 3.8 mm). false = such layers stay apart. */
   bool layer_merge = true;
+  /** \brief Departure (steps are no layers, see mergeBandLayers): with layer_merge, a plane whose
+    * members' neighbourhoods (their samples held by it or the larger plane) average off the two
+    * planes' joint plane by more than half its robust σ is a step beside the larger plane, not a
+    * layer of its band, and stays apart. A facade at σ = 4 cm whose windows are recessed 10 cm:
+    * the wall's band holds part of each window, every window member has a wall neighbour, and the
+    * layer merge alone joined 8 of 9 windows to the wall (F1 0.776, 2 of 10 planes). false = the
+    * layer merge alone. */
+  bool layer_steps = true;
   /** \brief Departure (step split, see splitSteps): after the bent-plane split, a region of a plane
     * that lies parallel to the rest, offset by a step within the noise band (its neighbourhoods'
     * mean distance off the plane by half a robust σ, an inside, the offset across its border, planes

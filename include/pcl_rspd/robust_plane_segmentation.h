@@ -145,7 +145,9 @@ struct RobustPlane
   *    across its extent, is split off: a door 2 cm proud of a wall at σ = 1.5 cm lies in its band;
   *  - band layers (setLayerMerge(false) for the paper): then a plane lying among a larger plane's
   *    samples (half of its members beside one of them) and within that plane's noise band across its
-  *    extent is merged into it: two seeds of one noisy face grow into two layers of its band;
+  *    extent is merged into it: two seeds of one noisy face grow into two layers of its band; not
+  *    a plane whose neighbourhoods average off the two planes' joint plane (setLayerSteps(false) to
+  *    merge it too): a window recessed within its wall's band is a step, not a layer;
   *  - planes across a step (setAcrossStepCheck(false) to keep them): then a plane whose members lie
   *    on two planes beside it, parallel to each other and not to it, at least as closely as on its
   *    own is dropped: a strip seeded across a door's edge before the door was parted from its wall;
@@ -646,6 +648,16 @@ public:
   /** \brief Whether layers of a plane's noise band are merged into it. */
   bool
   getLayerMerge () const { return params_.layer_merge; }
+
+  /** \brief Steps are no layers (default true; false = the layer merge alone): with the layer merge,
+    * a plane whose members' neighbourhoods average off its joint plane with the larger plane by more
+    * than half that plane's robust σ (a window recessed within its wall's noise band) stays apart.
+    * See pcl::rspd::DetectorParameters::layer_steps. */
+  void
+  setLayerSteps (bool enable);
+  /** \brief Whether a step beside a larger plane is kept out of the layer merge. */
+  bool
+  getLayerSteps () const { return params_.layer_steps; }
 
   /** \brief Step split (default true; false = the region stays in its plane): after the bent-plane
     * split, a region of a plane that lies parallel to the rest, offset by a step within the noise

@@ -446,6 +446,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setLayerMerge (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setLayerSteps (bool enable)
+{
+  params_.layer_steps = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setStepSplit (bool enable)
 {
   params_.step_split = enable;
