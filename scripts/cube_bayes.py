@@ -2,13 +2,15 @@
 # The likeliest face of every sample of a generated cube with isotropic noise, from the true cube:
 # the per-sample labelling no detector can beat on average, scored like a detection.
 #
-#   /usr/bin/python3 scripts/cube_bayes.py CLOUD.pcd SIGMA OUT.pcd [HALF_EDGE]
+#   /usr/bin/python3 scripts/cube_bayes.py CLOUD.pcd SIGMA OUT.pcd [HALF_EDGE | HX,HY,HZ]
 #   build/rspd_evaluate CLOUD.pcd CLOUD.gt OUT.pcd
 #
 # CLOUD is `rspd_make_scene cube P --isotropic [--noise SIGMA]` (the cube [-HALF_EDGE, HALF_EDGE]^3,
-# 0.5 by default, at the origin, not moved). A face's sample at p has density φ(d_n / σ) times, per
-# in-face axis t, Φ((h - t) / σ) - Φ((-h - t) / σ) (the face's extent blurred by the noise); each
-# sample goes to the face of the largest. Needs numpy (apt-get install python3-numpy).
+# 0.5 by default, at the origin, not moved; with `--layout L`, the box [-HX, HX] x [-HY, HY] x
+# [-HZ, HZ], each half extent the median |coordinate| of its two faces' samples along their axis).
+# A face's sample at p has density φ(d_n / σ) times, per in-face axis t, Φ((h - t) / σ) -
+# Φ((-h - t) / σ) (the face's extent blurred by the noise); each sample goes to the face of the
+# largest. Needs numpy (apt-get install python3-numpy).
 import math
 import sys
 
@@ -39,20 +41,23 @@ def read_xyz(path):
 
 def main():
     if len(sys.argv) not in (4, 5):
-        sys.exit('usage: cube_bayes.py CLOUD.pcd SIGMA OUT.pcd [HALF_EDGE]')
+        sys.exit('usage: cube_bayes.py CLOUD.pcd SIGMA OUT.pcd [HALF_EDGE | HX,HY,HZ]')
     xyz = read_xyz(sys.argv[1])
     sigma = float(sys.argv[2])
-    h = float(sys.argv[4]) if len(sys.argv) == 5 else 0.5
+    h = [float(v) for v in sys.argv[4].split(',')] if len(sys.argv) == 5 else [0.5]
+    h = h * 3 if len(h) == 1 else h
+    if len(h) != 3:
+        sys.exit('cube_bayes.py: HALF_EDGE is one value or three (HX,HY,HZ)')
     cdf = np.frompyfunc(lambda z: 0.5 * math.erfc(-z / math.sqrt(2.0)), 1, 1)
     inside = np.empty_like(xyz)  # log of the blurred extent along each axis
     for a in range(3):
-        mass = (cdf((h - xyz[:, a]) / sigma) - cdf((-h - xyz[:, a]) / sigma)).astype(np.float64)
+        mass = (cdf((h[a] - xyz[:, a]) / sigma) - cdf((-h[a] - xyz[:, a]) / sigma)).astype(np.float64)
         inside[:, a] = np.log(np.maximum(mass, 1e-300))
     score = []
     for a in range(3):
         others = inside.sum(1) - inside[:, a]
         for side in (1.0, -1.0):
-            score.append(-0.5 * ((side * xyz[:, a] - h) / sigma) ** 2 + others)
+            score.append(-0.5 * ((side * xyz[:, a] - h[a]) / sigma) ** 2 + others)
     labels = (np.argmax(np.array(score), 0) + 1).astype('<u4')
     n = len(labels)
     out = np.zeros(n, dtype=[('x', '<f4'), ('y', '<f4'), ('z', '<f4'), ('label', '<u4')])
