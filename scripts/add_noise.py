@@ -1,0 +1,56 @@
+#!/usr/bin/python3
+"""Move every point of a generated scene by isotropic noise of a chosen shape (heavier-tailed than
+the generator's Gaussian), keeping its truth: a probe of how the detector reads noise that is not
+Gaussian.
+
+    rspd_make_scene cube /tmp/c --noise 0
+    /usr/bin/python3 scripts/add_noise.py /tmp/c /tmp/c_laplace laplace 0.01 [SEED]
+    rspd_segment /tmp/c_laplace.pcd -o /tmp/out.pcd
+    rspd_evaluate /tmp/c_laplace.pcd /tmp/c_laplace.gt /tmp/out.pcd
+
+IN.pcd must be a binary PCD of x y z floats (as rspd_make_scene writes); IN.gt is copied to OUT.gt.
+KIND is gauss, laplace or t3 (Student-t, 3 degrees of freedom); SIGMA is the noise's robust σ per
+axis (1.4826 times the median absolute draw), so each kind has the spread the detector measures.
+Needs numpy (apt-get install python3-numpy).
+"""
+import shutil
+import sys
+
+import numpy as np
+
+
+def main():
+    if len(sys.argv) not in (5, 6):
+        sys.exit('usage: add_noise.py IN OUT gauss|laplace|t3 SIGMA [SEED]')
+    src, dst, kind, sigma = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+    rng = np.random.default_rng(int(sys.argv[5]) if len(sys.argv) == 6 else 1)
+    with open(src + '.pcd', 'rb') as f:
+        header = b''
+        while True:
+            line = f.readline()
+            if not line:
+                sys.exit('add_noise.py: %s.pcd has no DATA line' % src)
+            header += line
+            if line.startswith(b'DATA'):
+                break
+        fields = dict((l.split()[0], l.split()[1:]) for l in header.decode().splitlines()
+                      if l and not l.startswith('#'))
+        if fields['FIELDS'] != ['x', 'y', 'z'] or fields['DATA'] != ['binary']:
+            sys.exit('add_noise.py: expects a binary PCD of x y z (rspd_make_scene output)')
+        n = int(fields['POINTS'][0])
+        xyz = np.frombuffer(f.read(n * 12), dtype='<f4').reshape(n, 3).astype(np.float64)
+    draw = {'gauss': lambda: rng.standard_normal((n, 3)),
+            'laplace': lambda: rng.laplace(size=(n, 3)),
+            't3': lambda: rng.standard_t(3, size=(n, 3))}
+    if kind not in draw:
+        sys.exit('add_noise.py: KIND is gauss, laplace or t3')
+    e = draw[kind]()
+    e *= sigma / (1.4826 * np.median(np.abs(e)))
+    with open(dst + '.pcd', 'wb') as f:
+        f.write(header)
+        f.write((xyz + e).astype('<f4').tobytes())
+    shutil.copy(src + '.gt', dst + '.gt')
+
+
+if __name__ == '__main__':
+    main()
