@@ -9,8 +9,9 @@ Gaussian.
     rspd_evaluate /tmp/c_laplace.pcd /tmp/c_laplace.gt /tmp/out.pcd
 
 IN.pcd must be a binary PCD of x y z floats (as rspd_make_scene writes); IN.gt is copied to OUT.gt.
-KIND is gauss, laplace or t3 (Student-t, 3 degrees of freedom); SIGMA is the noise's robust σ per
-axis (1.4826 times the median absolute draw), so each kind has the spread the detector measures.
+KIND is gauss, laplace or t3 (Student-t, 3 degrees of freedom), drawn per axis; SIGMA is the
+noise's robust σ (1.4826 times the median absolute draw over all axes), so each kind has the spread
+the detector measures.
 Needs numpy (apt-get install python3-numpy).
 """
 import shutil
