@@ -1182,7 +1182,11 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   if (params.step_split && !patches.empty ())
     // Step split (departure, see DetectorParameters::step_split): on planes already cut at their
     // edges, and before the passes that assign and move samples by each plane's noise band.
-    st.steps_split = splitSteps (points, graph, params, patches);
+    // Until none splits: a call splits one region off each plane, and a wall whose band took
+    // several recessed windows holds a step at each.
+    for (std::size_t split = splitSteps (points, graph, params, patches); split > 0;
+         split = splitSteps (points, graph, params, patches))
+      st.steps_split += split;
 
   lap ("step split");
   if (params.layer_merge && patches.size () >= 2)

@@ -516,9 +516,10 @@ struct DetectorParameters
   /** \brief Departure (step split, see splitSteps): after the bent-plane split, a region of a plane
     * that lies parallel to the rest, offset by a step within the noise band (its neighbourhoods'
     * mean distance off the plane by half a robust σ, an inside, the offset across its border, planes
-    * meeting beyond twice its half extent), is split off as a plane of its own. A door 2 cm proud of
-    * its wall scanned at σ = 8 mm to 2.5 cm is taken with the wall by growth: no test of one
-    * sample's distance or normal tells it apart. false = such a region stays in its plane. */
+    * meeting beyond twice its half extent), is split off as a plane of its own, again until none
+    * is. A door 2 cm proud of its wall scanned at σ = 8 mm to 2.5 cm is taken with the wall by
+    * growth: no test of one sample's distance or normal tells it apart. false = such a region stays
+    * in its plane. */
   bool step_split = true;
   /** \brief Departure (planes across a step, see dropPlanesAcrossSteps): after the layer merge, a
     * plane whose members lie on two planes beside it, parallel to each other and not to it, at least

@@ -27,7 +27,9 @@ namespace rspd
   * distances scatter over 1.5. Per plane, each member's distance to the plane is averaged over its
   * graph neighbours in that plane; members whose mean departs from the median distance by more than
   * kStepSmoothSigmas robust σ, on one side, join in graph-connected regions. The largest region that
-  * is a step becomes a plane of its own (one split per plane and call), provided:
+  * is a step becomes a plane of its own (one split per plane and call; the detector calls it again
+  * until none splits, as a wall whose band took several recessed windows holds a step at each),
+  * provided:
   *  - it and the rest hold ε samples each;
   *  - it has an inside: at most kStepBorderShare of its members border the rest (a strip along an
   *    edge, where the next face's samples bend the mean, is all border);
