@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 
 #include <algorithm>
@@ -297,6 +298,21 @@ bandsOf (const LayerScene& s)
   }
   return band;
 }
+
+/** The two planes \a scene builds stay apart under the layer merge's defaults, and merge into one
+  * with \a off (the rule that keeps them apart) applied to the parameters. */
+void
+expectApartUnless (const std::function<LayerScene ()>& scene, const std::function<void (DetectorParameters&)>& off)
+{
+  LayerScene s = scene ();
+  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
+  EXPECT_EQ (s.planes.size (), 2u);
+  LayerScene without = scene ();
+  DetectorParameters p = parameters ();
+  off (p);
+  EXPECT_EQ (mergeBandLayers (without.set, without.graph, p, bandsOf (without), without.planes, labelsOf (without)), 1u);
+  EXPECT_EQ (without.planes.size (), 1u);
+}
 } // namespace
 
 TEST (BandLayerMerge, TwoLayersOfOneNoisyFaceBecomeOnePlane)
@@ -338,14 +354,7 @@ TEST (BandLayerMerge, ALayerOfClutterInsideTheFacesBandIsNotJoinedToIt)
     s.graph = rspd_test::bruteForceGraph (s.set.points, 50); // footprint cells that cover the face
     return s;
   };
-  LayerScene s = scene ();
-  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
-  EXPECT_EQ (s.planes.size (), 2u);
-  LayerScene off = scene ();
-  DetectorParameters p = parameters ();
-  p.in_band_layer_check = false;
-  EXPECT_EQ (mergeBandLayers (off.set, off.graph, p, bandsOf (off), off.planes, labelsOf (off)), 1u);
-  EXPECT_EQ (off.planes.size (), 1u);
+  expectApartUnless (scene, [] (DetectorParameters& p) { p.in_band_layer_check = false; });
 }
 
 TEST (BandLayerMerge, PlaneOffTheBandOrTiltedOutOfItStays)
@@ -424,12 +433,5 @@ TEST (BandLayerMerge, AWindowRecessedWithinItsWallsBandIsAStepNotALayer)
     s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
     return s;
   };
-  LayerScene s = scene ();
-  EXPECT_EQ (mergeBandLayers (s.set, s.graph, parameters (), bandsOf (s), s.planes, labelsOf (s)), 0u);
-  EXPECT_EQ (s.planes.size (), 2u);
-  LayerScene off = scene ();
-  DetectorParameters p = parameters ();
-  p.layer_steps = false;
-  EXPECT_EQ (mergeBandLayers (off.set, off.graph, p, bandsOf (off), off.planes, labelsOf (off)), 1u);
-  EXPECT_EQ (off.planes.size (), 1u);
+  expectApartUnless (scene, [] (DetectorParameters& p) { p.layer_steps = false; });
 }
