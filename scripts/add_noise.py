@@ -19,27 +19,16 @@ import sys
 
 import numpy as np
 
+import xyz_pcd
+
 
 def main():
     if len(sys.argv) not in (5, 6):
         sys.exit('usage: add_noise.py IN OUT gauss|laplace|t3 SIGMA [SEED]')
     src, dst, kind, sigma = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
     rng = np.random.default_rng(int(sys.argv[5]) if len(sys.argv) == 6 else 1)
-    with open(src + '.pcd', 'rb') as f:
-        header = b''
-        while True:
-            line = f.readline()
-            if not line:
-                sys.exit('add_noise.py: %s.pcd has no DATA line' % src)
-            header += line
-            if line.startswith(b'DATA'):
-                break
-        fields = dict((l.split()[0], l.split()[1:]) for l in header.decode().splitlines()
-                      if l and not l.startswith('#'))
-        if fields['FIELDS'] != ['x', 'y', 'z'] or fields['DATA'] != ['binary']:
-            sys.exit('add_noise.py: expects a binary PCD of x y z (rspd_make_scene output)')
-        n = int(fields['POINTS'][0])
-        xyz = np.frombuffer(f.read(n * 12), dtype='<f4').reshape(n, 3).astype(np.float64)
+    header, xyz = xyz_pcd.read(src + '.pcd', 'add_noise.py')
+    n = len(xyz)
     draw = {'gauss': lambda: rng.standard_normal((n, 3)),
             'laplace': lambda: rng.laplace(size=(n, 3)),
             't3': lambda: rng.standard_t(3, size=(n, 3))}
@@ -47,9 +36,7 @@ def main():
         sys.exit('add_noise.py: KIND is gauss, laplace or t3')
     e = draw[kind]()
     e *= sigma / (1.4826 * np.median(np.abs(e)))
-    with open(dst + '.pcd', 'wb') as f:
-        f.write(header)
-        f.write((xyz + e).astype('<f4').tobytes())
+    xyz_pcd.write(dst + '.pcd', header, xyz.astype(np.float64) + e)
     shutil.copy(src + '.gt', dst + '.gt')
 
 

@@ -15,38 +15,21 @@ import sys
 
 import numpy as np
 
+import xyz_pcd
+
 
 def main():
     if len(sys.argv) not in (3, 4):
         sys.exit('usage: thin_density.py IN OUT [SEED]')
     src, dst = sys.argv[1], sys.argv[2]
     rng = np.random.default_rng(int(sys.argv[3]) if len(sys.argv) == 4 else 1)
-    with open(src + '.pcd', 'rb') as f:
-        header = []
-        while True:
-            line = f.readline()
-            if not line:
-                sys.exit('thin_density.py: %s.pcd has no DATA line' % src)
-            header.append(line.decode())
-            if line.startswith(b'DATA'):
-                break
-        words = dict((l.split()[0], l.split()[1:]) for l in header if l.strip() and not l.startswith('#'))
-        if words['FIELDS'] != ['x', 'y', 'z'] or words['DATA'] != ['binary']:
-            sys.exit('thin_density.py: expects a binary PCD of x y z (rspd_make_scene output)')
-        n = int(words['POINTS'][0])
-        xyz = np.frombuffer(f.read(n * 12), dtype='<f4').reshape(n, 3)
+    header, xyz = xyz_pcd.read(src + '.pcd', 'thin_density.py')
+    n = len(xyz)
     truth = np.fromfile(src + '.gt', dtype='<u4')
     axis = int(np.argmax(np.ptp(xyz, 0)))
     t = (xyz[:, axis] - xyz[:, axis].min()) / np.ptp(xyz[:, axis])
     keep = rng.random(n) < 0.1 + 0.9 * t
-    m = int(keep.sum())
-    out = []
-    for line in header:
-        key = line.split()[0] if line.strip() else ''
-        out.append('%s %d\n' % (key, m) if key in ('WIDTH', 'POINTS') else line)
-    with open(dst + '.pcd', 'wb') as f:
-        f.write(''.join(out).encode())
-        f.write(xyz[keep].tobytes())
+    xyz_pcd.write(dst + '.pcd', header, xyz[keep])
     truth[keep].astype('<u4').tofile(dst + '.gt')
 
 

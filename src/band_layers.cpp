@@ -62,13 +62,10 @@ isStepOff (const PointSet& points, const NeighborGraph& graph, const std::vector
   Eigen::Vector3d center, normal;
   if (!leastSquaresPlane (points, both, {}, pb.center, center, normal))
     return false;
+  const double sigma = robustSigmaAbout (points, both, center, normal);
   const auto offset = [&] (std::uint32_t i) { return (points.points[i].cast<double> () - center).dot (normal); };
   std::vector<double> d;
-  d.reserve (both.size ());
-  for (const auto i : both)
-    d.push_back (std::abs (offset (i)));
-  const double sigma = kMadScale * medianInPlace (d);
-  d.clear ();
+  d.reserve (pa.members.size ());
   for (const auto i : pa.members)
   {
     double sum = offset (i);
