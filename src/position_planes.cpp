@@ -202,6 +202,8 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
   double reach = kPositionBandSigmas * noise;
   double level = noise; // the noise the search allows (a ladder step may raise it)
   double noisiest_kept = 0.0;
+  // The least noisy plane a ladder step turned down for its noise alone (position_ladder_rungs).
+  double quietest_noise_reject = HUGE_VAL;
   std::vector<LocalSurface> local; // per sample searched again (surface parts), its neighbourhood's plane
 
   // Open: no plane holds the sample, and it lies in the noise band of no plane a neighbour holds
@@ -346,6 +348,11 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       // box corner in the paper's assignment mode: 24 samples of the bands along its edges, tilted
       // 20° from both faces, as noisy as a step above the planes found allows).
       const bool too_small_for_step = level > noise && best.size () <= static_cast<std::size_t> (graph.k ());
+      if (params.position_ladder_rungs && go_on && !(sigma <= bound) && !bent && !too_small_for_step &&
+          insideASurface (graph, best) &&
+          !isBandLayer (points, graph, params, patches, band, labels, plane) &&
+          !liesOnNeighbourPlane (points, graph, patches, labels, plane))
+        quietest_noise_reject = std::min (quietest_noise_reject, sigma);
       if (!(sigma <= bound) || bent || too_small_for_step || (go_on && !insideASurface (graph, best)) ||
           isBandLayer (points, graph, params, patches, band, labels, plane) ||
           liesOnNeighbourPlane (points, graph, patches, labels, plane))
@@ -408,17 +415,25 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       reach = kPositionBandSigmas * level;
     }
     noisiest_kept = 0.0;
+    quietest_noise_reject = HUGE_VAL;
     std::vector<char> surface (n, 0);
     for (const auto i : left)
       surface[i] = labels[i] == kNoPatch && local[i].median <= std::min (reach, kSurfaceRadiusShare * local[i].radius);
     for (const auto& p : partsOf (graph, surface, eps))
       searchPart (p, true);
-    // The first step is always tried; the next only once a step kept a plane noisier than the last.
-    if (!params.position_surface_ladder || (step > 0 && !(noisiest_kept > base)))
+    // The first step is always tried; the next only once a step kept a plane noisier than the last,
+    // or (position_ladder_rungs) turned one down for its noise alone within the next step: a rough
+    // face that no plane found anchors, which that step then keeps.
+    const bool rung = params.position_ladder_rungs && step > 0 && !(noisiest_kept > base) &&
+                      quietest_noise_reject <= params.noisy_group_ratio * level;
+    if (!params.position_surface_ladder || (step > 0 && !(noisiest_kept > base) && !rung))
       break;
+    if (rung)
+      base = level;
   }
   return patches.size () - before;
 }
 
 } // namespace rspd
 } // namespace pcl
+

@@ -137,8 +137,11 @@ TEST (PositionPlanes, CurvedPatchIsNoPlane)
 
 TEST (PositionPlanes, NoisierThanEveryPlaneFoundIsNoPlane)
 {
-  // The face of the first test at σ 1.5 cm, where the noisiest plane found has σ 3 mm.
+  // The face of the first test at σ 1.5 cm, where the noisiest plane found has σ 3 mm (without the
+  // ladder's rungs, which climb to it from a step that turns it down for its noise alone:
+  // ARungTakesTheLadderToAFaceNoPlaneKeptAnchors).
   Scene s;
+  s.params.position_ladder_rungs = false;
   const std::size_t first = s.set.points.size ();
   rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.5f}, {0.3f, 0, 0}, {0, 0.3f, 0.05f}, 12, 12, 0.015f, 2);
   s.bendNormals (first, 25.0 * M_PI / 180.0);
@@ -276,6 +279,7 @@ TEST (PositionPlanes, WhatAPartLeftOnASurfaceIsSearchedAgain)
     const auto face = rspd_test::addRectangle (s.set, {1.2f, 0.2f, 0.52f}, {0, 0.3f, 0}, {0, 0, 0.3f}, 12, 12, 0.002f, 13);
     s.bendNormals (first, 25.0 * M_PI / 180.0);
     s.params.position_surface_parts = surface_parts;
+    s.params.position_ladder_rungs = false; // the rough face is a plane on a rung: one plane per test
     const std::size_t added = s.run ();
     const bool across_x = added == 1 && std::abs (s.planes[1].normal.x ()) > std::cos (1.0 * M_PI / 180.0);
     return std::make_pair (across_x ? heldBy (s, face, 1) : 0, added);
@@ -356,7 +360,7 @@ TEST (PositionPlanes, ACornerOfNoisyFacesIsThreePlanesWhereMembersFaceTheirPlane
   EXPECT_EQ (run (false).first, 0u);
 }
 
-TEST (PositionPlanes, TheNoiseLadderClimbsOnlyOnPlanesKept)
+TEST (PositionPlanes, WithoutRungsTheNoiseLadderClimbsOnlyOnPlanesKept)
 {
   // Two faces of 0.4 m (20 x 20 samples) apart, at σ 5 mm and 9 mm, the noisiest plane found 3 mm.
   // Both are too noisy for the first search; the ladder's first step (twice 3 mm) keeps the 5 mm
@@ -371,11 +375,31 @@ TEST (PositionPlanes, TheNoiseLadderClimbsOnlyOnPlanesKept)
     rspd_test::addRectangle (s.set, {1.5f, 1.2f, 0.5f}, {0, 0.4f, 0}, {0, 0, 0.4f}, 20, 20, 0.009f, 42);
     s.bendNormals (first, 25.0 * M_PI / 180.0);
     s.params.position_surface_ladder = ladder;
+    s.params.position_ladder_rungs = false;
     return s.run (0.003);
   };
   EXPECT_EQ (run (true, true), 2u);
   EXPECT_EQ (run (true, false), 0u);
   EXPECT_EQ (run (false, true), 0u);
+}
+
+TEST (PositionPlanes, ARungTakesTheLadderToAFaceNoPlaneKeptAnchors)
+{
+  // A face of 0.4 m (20 x 20 samples) at σ 9 mm alone, the noisiest plane found 3 mm: the ladder's
+  // first step (6 mm) keeps nothing but turns the face down for its noise alone, within the next
+  // step (12 mm), which keeps it (boxes layout 448 with outliers: no rough box seeded, 7 -> 32 of
+  // 32). A face at σ 30 mm is beyond the next step: no rung, no plane.
+  const auto run = [] (float sigma, bool rungs) {
+    Scene s;
+    const std::size_t first = s.set.points.size ();
+    rspd_test::addRectangle (s.set, {1.5f, 1.2f, 0.5f}, {0, 0.4f, 0}, {0, 0, 0.4f}, 20, 20, sigma, 42);
+    s.bendNormals (first, 25.0 * M_PI / 180.0);
+    s.params.position_ladder_rungs = rungs;
+    return s.run (0.003);
+  };
+  EXPECT_EQ (run (0.009f, true), 1u);
+  EXPECT_EQ (run (0.009f, false), 0u);
+  EXPECT_EQ (run (0.03f, true), 0u);
 }
 
 TEST (PositionPlanes, NoNoiseBoundOrNoSamplesAddsNothing)

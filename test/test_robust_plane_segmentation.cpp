@@ -1008,6 +1008,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (PositionSurfaceParts),
     RSPD_SWITCH (PositionSurfaceNormals),
     RSPD_SWITCH (PositionSurfaceLadder),
+    RSPD_SWITCH (PositionLadderRungs),
     RSPD_SWITCH (ThickCellsFollowNoisySeeds),
     RSPD_SWITCH (BendNoiseTest),
     RSPD_SWITCH (EdgeAwareNormals),

@@ -378,6 +378,15 @@ struct DetectorParameters
     * a plane holds more than k samples (with fewer, no member's neighbourhood lies in it).
     * false = the noisiest plane found bounds every plane by position. */
   bool position_surface_ladder = true;
+  /** \brief Departure (rungs of the noise ladder, part of position_surface_ladder): a step that keeps
+    * no plane, but turned down a plane for its noise alone (flat, inside a surface, no layer, no
+    * strip of a neighbouring plane) within noisy_group_ratio times the step's level, is followed by
+    * a step at that level times noisy_group_ratio. The ladder climbs to rough faces that no plane
+    * found anchors: boxes 3 times as rough as the floor, where outliers widened the octree's root
+    * cell so that neither the first split nor the small-plane pass seeded any of them (boxes layout
+    * 448, 1-20 % outliers: 7 of 32 planes without, 32 with). false = a step follows only a step that
+    * kept a plane noisier than the last. */
+  bool position_ladder_rungs = true;
   /** \brief Departure (tail odds): the Tails rule takes a plane's noise tail only as far as its
     * Gaussian noise stays likelier than the clutter beside it: the clutter's density per unit |d|
     * is read from the samples no plane holds beside the plane at 4.5-6 σ (where its noise leaves

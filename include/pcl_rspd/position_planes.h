@@ -49,8 +49,9 @@ namespace rspd
   * nearer parallel to the plane than perpendicular (the strips of the faces beside a noisy face
   * would bend it). Then (DetectorParameters::position_surface_ladder) what is still left is
   * searched so again for planes up to noisy_group_ratio times as noisy as the noisiest plane kept,
-  * with a reach as much wider, step by step while a step keeps a plane noisier than the last; there
-  * a plane holds more than k samples.
+  * with a reach as much wider, step by step while a step keeps a plane noisier than the last, or
+  * (DetectorParameters::position_ladder_rungs) keeps none but turned one down for its noise alone
+  * within the next step; there a plane holds more than k samples.
   * Why: outliers join a scene's free samples into one part, whose best plane is a slab of them, and
   * the faces beside it were never tried; and rough faces among outliers are seeded by no earlier
   * pass, each bounded by the planes found. The pass runs on one thread, in index order: the result

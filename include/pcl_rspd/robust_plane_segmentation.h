@@ -534,6 +534,15 @@ public:
   /** \brief Whether the surface parts climb a noise ladder. */
   bool
   getPositionSurfaceLadder () const { return params_.position_surface_ladder; }
+  /** \brief Rungs of the noise ladder (default true; false = a step follows only a step that kept a
+    * noisier plane): a step that keeps no plane but turned one down for its noise alone, within the
+    * next step's noise, is followed by that step. See
+    * pcl::rspd::DetectorParameters::position_ladder_rungs. */
+  void
+  setPositionLadderRungs (bool enable);
+  /** \brief Whether the noise ladder steps on turned-down planes too. */
+  bool
+  getPositionLadderRungs () const { return params_.position_ladder_rungs; }
 
   /** \brief Tail odds (default true; false = every plane's 4 σ tail): the last assignment takes a
     * plane's noise tail only as far as its noise stays likelier than the clutter measured beside it

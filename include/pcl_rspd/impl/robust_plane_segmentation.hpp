@@ -376,6 +376,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceLadder (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionLadderRungs (bool enable)
+{
+  params_.position_ladder_rungs = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setTailOdds (bool enable)
 {
   params_.tail_odds = enable;
