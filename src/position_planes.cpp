@@ -348,14 +348,15 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       // box corner in the paper's assignment mode: 24 samples of the bands along its edges, tilted
       // 20° from both faces, as noisy as a step above the planes found allows).
       const bool too_small_for_step = level > noise && best.size () <= static_cast<std::size_t> (graph.k ());
-      if (params.position_ladder_rungs && go_on && !(sigma <= bound) && !bent && !too_small_for_step &&
-          insideASurface (graph, best) &&
-          !isBandLayer (points, graph, params, patches, band, labels, plane) &&
-          !liesOnNeighbourPlane (points, graph, patches, labels, plane))
-        quietest_noise_reject = std::min (quietest_noise_reject, sigma);
-      if (!(sigma <= bound) || bent || too_small_for_step || (go_on && !insideASurface (graph, best)) ||
-          isBandLayer (points, graph, params, patches, band, labels, plane) ||
-          liesOnNeighbourPlane (points, graph, patches, labels, plane))
+      const bool quiet = sigma <= bound;
+      // The other tests, read once, and for a noisy plane only where a rung may climb to it.
+      const bool sound = (quiet || (params.position_ladder_rungs && go_on)) && !bent && !too_small_for_step &&
+                         (!go_on || insideASurface (graph, best)) &&
+                         !isBandLayer (points, graph, params, patches, band, labels, plane) &&
+                         !liesOnNeighbourPlane (points, graph, patches, labels, plane);
+      if (!quiet && sound)
+        quietest_noise_reject = std::min (quietest_noise_reject, sigma); // turned down for its noise alone
+      if (!quiet || !sound)
       {
         turned_down = true;
         // A surface that bends is a curved one: the planes cut from it next would be its facets.
@@ -436,4 +437,3 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
 
 } // namespace rspd
 } // namespace pcl
-
