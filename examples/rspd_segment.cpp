@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -135,6 +135,9 @@ const char* const kHelp =
     "  --step-sides on|off  where two parallel planes make a step deeper than their noise bands,\n"
     "                   a point within the other plane's band goes to it when it holds more of\n"
     "                   the point's neighbours (default on; off = the paper)\n"
+    "  --step-regions on|off  before that, a region of a plane that lies off it toward a parallel\n"
+    "                   plane beside it goes to that plane when its points lie nearer to it, as\n"
+    "                   a window in a wall's noise band (default on; off = points one at a time)\n"
     "  --support on|off last, a point on or beyond its plane's rim, more than 6 times its\n"
     "                   neighbours' spacing from the rest of the plane or more than 2 ahead of\n"
     "                   all of it, and in no other plane's noise band, leaves it; repeated\n"
@@ -276,6 +279,7 @@ struct Options
   bool edge_corners = true;
   bool edge_wedges = true;
   bool step_sides = true;
+  bool step_regions = true;
   bool thick_join = true;
   bool small_thick_join = true;
   bool noisy_groups = true;
@@ -445,6 +449,8 @@ parseArguments (int argc, char** argv)
       o.thick_follow = option.choice ("on", "off");
     else if (arg == "--step-sides")
       o.step_sides = option.choice ("on", "off");
+    else if (arg == "--step-regions")
+      o.step_regions = option.choice ("on", "off");
     else if (arg == "--left-normals")
     {
       const std::string v = value ();
@@ -693,6 +699,7 @@ run (const Options& o)
   seg.setEdgeCorners (o.edge_corners);
   seg.setEdgeWedges (o.edge_wedges);
   seg.setStepSides (o.step_sides);
+  seg.setStepRegions (o.step_regions);
   seg.setThickCellJoin (o.thick_join);
   seg.setSmallPassThickCellJoin (o.small_thick_join);
   seg.setNoisySeedGroups (o.noisy_groups);
@@ -751,10 +758,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu noisy seeds' planes dropped as where a volume of points ends, %zu kept by the small-plane "
        "pass (%zu brought to eps by completion, %zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends (%zu as layers inside a denser plane's band), %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends (%zu as layers inside a denser plane's band), %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved in regions and %zu one at a time, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.volume_layers, stats.small_seeds, stats.small_completed, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.in_band_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.in_band_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_region_moved, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)

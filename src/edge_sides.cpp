@@ -313,15 +313,7 @@ settleStepSides (const PointSet& points, const NeighborGraph& graph, const std::
       next[i] = best;
     }
   }
-  std::size_t moved = 0;
-  for (std::size_t i = 0; i < labels.size (); ++i)
-    moved += next[i] != labels[i];
-  if (moved > 0)
-  {
-    labels.swap (next);
-    membersFromLabels (labels, patches);
-  }
-  return moved;
+  return adoptLabels (next, labels, patches);
 }
 
 } // namespace rspd

@@ -36,6 +36,20 @@ membersFromLabels (const std::vector<std::uint32_t>& labels, std::vector<PlanarP
 }
 
 std::size_t
+adoptLabels (std::vector<std::uint32_t>& next, std::vector<std::uint32_t>& labels, std::vector<PlanarPatch>& patches)
+{
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < labels.size (); ++i)
+    changed += next[i] != labels[i];
+  if (changed > 0)
+  {
+    labels.swap (next);
+    membersFromLabels (labels, patches);
+  }
+  return changed;
+}
+
+std::size_t
 growPatches (const PointSet& points, const NeighborGraph& graph, std::vector<PlanarPatch>& patches,
              std::vector<std::uint32_t>& labels, std::vector<std::uint8_t>* flags, const PointSet* trimmed)
 {

@@ -1272,14 +1272,26 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   }
 
   lap ("edge sides");
-  if (params.step_sides && patches.size () >= 2)
+  if ((params.step_sides || params.step_regions) && patches.size () >= 2)
   {
     labels = labelSamples (points.size (), patches);
+    if (params.step_regions)
+      // Regions first (departure, see DetectorParameters::step_regions): they move blocks the
+      // per-sample rule leaves, and that rule then settles their rims. Until none moves; a region
+      // that moved may leave the next one beside the parallel plane.
+      for (int pass = 0; pass < kStepSidePasses; ++pass)
+      {
+        const std::size_t moved = settleStepRegions (points, graph, noiseBands (points, params, patches), params.num_threads,
+                                                     patches, labels);
+        st.step_region_moved += moved;
+        if (moved == 0)
+          break;
+      }
     // Each pass lets the samples whose neighbours the last one moved follow; a majority rule settles
     // in a few (the facade at σ = 5 cm: 4,104, 875, then 85 over two more); the cap guards a cycle.
     // Bands are measured again each pass: a plane that held the other's samples had a wider one, which
     // may have hidden the step (the facade at σ = 5 cm: F1 0.970 with the first pass's bands kept).
-    for (int pass = 0; pass < kStepSidePasses; ++pass)
+    for (int pass = 0; params.step_sides && pass < kStepSidePasses; ++pass)
     {
       const std::size_t moved = settleStepSides (points, graph, noiseBands (points, params, patches),
                                                  params.num_threads, patches, labels);

@@ -982,6 +982,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (EdgeWedges),
     RSPD_SWITCH (ThickCellJoin),
     RSPD_SWITCH (StepSides),
+    RSPD_SWITCH (StepRegions),
     RSPD_SWITCH (SupportCheck),
     RSPD_SWITCH (FinalRefit),
     RSPD_SWITCH (CoplanarMerge),

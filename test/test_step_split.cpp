@@ -1,11 +1,13 @@
 /*
  * Tests of the step split (departure, splitSteps): a region offset parallel to the rest of its plane,
  * by less than the plane's noise band, is split off; bowls, strips and flat planes are not. And of
- * planes across a step (dropPlanesAcrossSteps): a strip bridging a step is dropped, a ramp is not.
+ * planes across a step (dropPlanesAcrossSteps): a strip bridging a step is dropped, a ramp is not. And
+ * of step regions (settleStepRegions): a block of a door that its wall holds goes to the door.
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "test_helpers.h"
 
+#include <pcl_rspd/patch_growth.h>
 #include <pcl_rspd/step_split.h>
 
 #include <gtest/gtest.h>
@@ -211,6 +213,116 @@ rampBetween (double x, double)
   return x <= 0.75 ? 0.0 : x >= 1.05 ? 0.03 : 0.1 * (x - 0.75);
 }
 } // namespace
+
+namespace
+{
+/** The door wall at σ = 1.5 cm with the door \a height proud, shared as growth leaves a door within
+  * the wall's band: the wall (plane 0) holds its own samples and those of the door's left half
+  * (\a shared) or its own alone; the door (plane 1) the rest. Bands 3σ (4.5 cm). */
+struct SharedDoor
+{
+  Wall w;
+  std::vector<std::uint32_t> labels;
+  std::vector<double> band;
+};
+
+SharedDoor
+makeSharedDoor (double height, bool shared, std::uint32_t seed, float scale = 1.0f)
+{
+  SharedDoor d{makeWall ([height] (double x, double y) { return door (x, y) > 0.0 ? height : 0.0; }, 0.015f, seed, scale),
+               {},
+               {0.045 * scale, 0.045 * scale}};
+  std::vector<std::uint32_t> wall, panel;
+  for (std::uint32_t i = 0; i < d.w.set.size (); ++i)
+    (d.w.raised[i] && (!shared || d.w.set.points[i].x () > 0.89f * scale) ? panel : wall).push_back (i);
+  d.w.patches = {rspd_test::makePatch (wall, {0, 0, 0}, {0, 0, 1}, d.band[0], 0.1),
+                 rspd_test::makePatch (panel, {0, 0, height * scale}, {0, 0, 1}, d.band[1], 0.1)};
+  d.labels = labelSamples (d.w.set.size (), d.w.patches);
+  return d;
+}
+
+/** Passes of settleStepRegions until none moves (at most 8), as the detector runs them. */
+std::size_t
+settleRegions (SharedDoor& d, const NeighborGraph& g, int threads = 1)
+{
+  std::size_t moved = 0;
+  for (int pass = 0; pass < 8; ++pass)
+  {
+    const std::size_t m = settleStepRegions (d.w.set, g, d.band, threads, d.w.patches, d.labels);
+    moved += m;
+    if (m == 0)
+      break;
+  }
+  return moved;
+}
+
+/** Door samples the wall holds, and wall samples the door holds. */
+std::pair<std::size_t, std::size_t>
+misplaced (const SharedDoor& d)
+{
+  std::size_t door_in_wall = 0, wall_in_door = 0;
+  for (std::size_t i = 0; i < d.labels.size (); ++i)
+  {
+    door_in_wall += d.w.raised[i] && d.labels[i] == 0;
+    wall_in_door += !d.w.raised[i] && d.labels[i] == 1;
+  }
+  return {door_in_wall, wall_in_door};
+}
+} // namespace
+
+TEST (StepRegions, ABlockOfTheDoorThatTheWallHoldsGoesToTheDoor)
+{
+  // 3 cm proud, 2σ: within both bands, where the step sides move no sample, and the block's samples
+  // are each other's neighbours.
+  SharedDoor d = makeSharedDoor (0.03, true, 61);
+  const NeighborGraph g = rspd_test::bruteForceGraph (d.w.set.points, 30);
+  const auto before = misplaced (d);
+  ASSERT_GT (before.first, 400u); // the door's left half
+  EXPECT_GT (settleRegions (d, g), 0u);
+  const auto after = misplaced (d);
+  EXPECT_LT (after.first, before.first / 10) << after.first;
+  EXPECT_LT (after.second, 60u) << after.second; // the wall's samples along the door's rim
+  for (std::uint32_t l = 0; l < 2; ++l)
+    for (const auto m : d.w.patches[l].members)
+      EXPECT_EQ (d.labels[m], l);
+}
+
+TEST (StepRegions, WallBesideTheDoorKeepsItsSamples)
+{
+  // Each plane holds its own: the wall's noise beside the door lies off it toward the door, but a
+  // fraction of σ off, nearer the wall than the door.
+  SharedDoor d = makeSharedDoor (0.03, false, 62);
+  const NeighborGraph g = rspd_test::bruteForceGraph (d.w.set.points, 30);
+  const std::vector<std::uint32_t> before = d.labels;
+  settleRegions (d, g);
+  const auto after = misplaced (d);
+  EXPECT_LT (after.first + after.second, 10u) << after.first << " " << after.second;
+}
+
+TEST (StepRegions, StepBeyondTheBandsIsLeftToTheStepSides)
+{
+  // 6 cm proud, beyond the 4.5 cm bands: distance tells each sample's plane (settleStepSides).
+  SharedDoor d = makeSharedDoor (0.06, true, 63);
+  const NeighborGraph g = rspd_test::bruteForceGraph (d.w.set.points, 30);
+  const std::vector<std::uint32_t> before = d.labels;
+  EXPECT_EQ (settleStepRegions (d.w.set, g, d.band, 1, d.w.patches, d.labels), 0u);
+  EXPECT_EQ (d.labels, before);
+}
+
+TEST (StepRegions, ResultDoesNotDependOnScaleOrThreadCount)
+{
+  SharedDoor a = makeSharedDoor (0.03, true, 64);
+  SharedDoor b = makeSharedDoor (0.03, true, 64, 1000.0f);
+  SharedDoor c = makeSharedDoor (0.03, true, 64);
+  const NeighborGraph ga = rspd_test::bruteForceGraph (a.w.set.points, 30);
+  const NeighborGraph gb = rspd_test::bruteForceGraph (b.w.set.points, 30);
+  const std::size_t moved = settleRegions (a, ga, 1);
+  EXPECT_GT (moved, 0u);
+  EXPECT_EQ (settleRegions (b, gb, 1), moved);
+  EXPECT_EQ (settleRegions (c, ga, 2), moved);
+  EXPECT_EQ (a.labels, b.labels);
+  EXPECT_EQ (a.labels, c.labels);
+}
 
 TEST (AcrossSteps, StripAcrossADoorsEdgeIsDropped)
 {

@@ -30,6 +30,13 @@ labelSamples (std::size_t num_samples, const std::vector<PlanarPatch>& patches);
 void
 membersFromLabels (const std::vector<std::uint32_t>& labels, std::vector<PlanarPatch>& patches);
 
+/** \brief The labels a pass decided (\a next, one per sample) replace \a labels, and the patches'
+  * members follow (membersFromLabels), when any differs; for the passes that judge every sample on
+  * the labels before them and move some at once.
+  * \return samples whose label changed */
+std::size_t
+adoptLabels (std::vector<std::uint32_t>& next, std::vector<std::uint32_t>& labels, std::vector<PlanarPatch>& patches);
+
 /** \brief Per-sample flags that let later grow-merge iterations skip a sample's graph row.
   *
   * During grow-merge a labelled sample never loses its label and merging relabels whole patches,

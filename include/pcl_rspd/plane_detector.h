@@ -477,6 +477,14 @@ struct DetectorParameters
     * the samples of the other's noise that its band reaches: a facade at σ = 5 cm kept up to 30 % of
     * the samples of windows recessed 20 cm. false = the paper (and the passes before this one). */
   bool step_sides = true;
+  /** \brief Departure (step regions, see settleStepRegions): before the step sides' samples, a
+    * plane's regions that lie off it on one side (as the step split finds them) go to the parallel
+    * plane beside them on that side, offset within the wider noise band, when their members lie
+    * nearer to it (median distance, by two standard errors); passes until none moves (at most 8). Where a step is under the plane's noise band (a window 10 cm deep
+    * in a facade at σ = 4 cm, 3σ band 12 cm) the step sides move no sample, and a majority of
+    * neighbours does not move a block of the window's samples that the wall holds. false = the step
+    * sides' samples alone. */
+  bool step_regions = true;
   /** \brief Departure (plane support, see releaseUnsupportedMembers): last of all, a member on or
     * beyond its plane's rim whose in-plane gap to the rest of the plane is more than
     * kSupportGapRatio times its neighbours' gaps (or with under kMinSupportShare of its neighbours in
@@ -751,6 +759,7 @@ struct DetectorStatistics
   std::size_t edge_outside = 0;      ///< samples outside an edge kept by the farther plane (edge_wedges)
   std::size_t edge_released = 0;     ///< samples it took off their plane for none
   std::size_t step_moved = 0;        ///< samples the step-side rule gave to a parallel plane (step_sides)
+  std::size_t step_region_moved = 0; ///< samples the step-region rule gave to a parallel plane (step_regions)
   std::size_t assigned = 0;          ///< samples the last assignment pass gave a plane
   std::size_t member_gap_refused = 0; ///< samples it left out as beyond the spacing of the members beside them (member_gaps)
   std::size_t position_planes = 0;   ///< planes found by position among what was left (position_planes)

@@ -163,7 +163,10 @@ struct RobustPlane
   *  - step sides (setStepSides(false) for the paper): then a sample next to a parallel plane offset
   *    by more than both noise bands goes to it when it lies within its band and it holds more of the
   *    sample's neighbours, until none moves (a window recessed 20 cm behind a wall scanned at
-  *    σ = 5 cm: distance cannot tell where the bands overlap, the neighbours can);
+  *    σ = 5 cm: distance cannot tell where the bands overlap, the neighbours can); before that
+  *    (setStepRegions(false) for samples one at a time), a plane's region that lies off it toward
+  *    a parallel plane beside it goes to that plane when its samples lie nearer to it (a window
+  *    10 cm deep in a wall at σ = 4 cm, inside the wall's band);
   *  - final refit (setFinalRefit(false) for the paper's estimate): once the planes' samples are
   *    settled, each plane's centre and normal become the least-squares plane of its members within
   *    2.5 robust sigmas, before the passes below judge distances to it, and again on the final
@@ -738,6 +741,17 @@ public:
   /** \brief Whether samples nearer a parallel plane across a step go to it. */
   bool
   getStepSides () const { return params_.step_sides; }
+
+  /** \brief Step regions (default true; false = samples one at a time): before the step sides, a
+    * plane's region that lies off it on one side, toward a parallel plane beside it, goes to that
+    * plane when the median of its samples' distances to it is below that to their own plane (a
+    * block of a window's samples that the wall's band took). See pcl::rspd::settleStepRegions and
+    * pcl::rspd::DetectorParameters::step_regions. */
+  void
+  setStepRegions (bool enable);
+  /** \brief Whether regions off a plane toward a parallel plane beside them go to it. */
+  bool
+  getStepRegions () const { return params_.step_regions; }
 
   /** \brief Plane support (default true; false = the paper): last of all, a member on or beyond its
     * plane's rim whose in-plane gap to the plane's nearest other sample is more than 6 times its

@@ -516,6 +516,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setStepSides (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setStepRegions (bool enable)
+{
+  params_.step_regions = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setSupportCheck (bool enable)
 {
   params_.support_check = enable;
