@@ -1277,8 +1277,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     labels = labelSamples (points.size (), patches);
     if (params.step_regions)
       // Regions first (departure, see DetectorParameters::step_regions): they move blocks the
-      // per-sample rule leaves, and that rule then settles their rims. Until none moves; a region
-      // that moved may leave the next one beside the parallel plane.
+      // per-sample rule leaves, and that rule, asked within the bands too, then settles their rims.
+      // Until none moves; a region that moved may leave the next one beside the parallel plane.
       for (int pass = 0; pass < kStepSidePasses; ++pass)
       {
         const std::size_t moved = settleStepRegions (points, graph, noiseBands (points, params, patches), params.num_threads,
@@ -1294,7 +1294,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     for (int pass = 0; params.step_sides && pass < kStepSidePasses; ++pass)
     {
       const std::size_t moved = settleStepSides (points, graph, noiseBands (points, params, patches),
-                                                 params.num_threads, patches, labels);
+                                                 params.num_threads, patches, labels, params.step_regions);
       st.step_moved += moved;
       if (moved == 0)
         break;

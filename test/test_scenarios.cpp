@@ -368,6 +368,40 @@ TEST (Scenario, BlocksOfWindowsThatTheWallHoldsGoToTheirWindows)
   EXPECT_GT (with.score.f1, without.score.f1 + 0.008);
 }
 
+TEST (Scenario, DeepWindowsInNoiseGiveTheSamePlanesScaledMovedOrTurned)
+{
+  // The issue's invariance bar on that facade: its frame's second axis is the mode of stray
+  // normals, which moves with rounding, and how much of each window the wall's band takes depends on
+  // the cells. With the step regions alone, the copies ranged over 0.934-0.962 (the windows' rims:
+  // the wall's tail samples beyond a window's edge in the window, 122-155 per window scaled ×1000);
+  // with the step sides' majority within the bands too (twice as many neighbours in the other
+  // plane), 0.970-0.976 over these four.
+  const pcl::rspd::Scene scene = deepWindowsInNoise ();
+  std::vector<double> f1;
+  for (int copy = 0; copy < 4; ++copy)
+  {
+    pcl::PointCloud<pcl::PointXYZ> moved = scene.cloud;
+    pcl::rspd::SceneOptions move;
+    if (copy == 1)
+      move.scale = 1000.0;
+    else if (copy == 2)
+      move.offset = Eigen::Vector3d (1000.0, 0.0, 0.0);
+    else if (copy == 3)
+    {
+      move.random_rotation = true;
+      move.seed = 2;
+    }
+    pcl::rspd::transformCloud (moved, move);
+    const Detection d = detect (moved, scene.labels);
+    const pcl::rspd::EvaluationResult score = pcl::rspd::evaluatePlaneDetection (scene.cloud, scene.labels, d.labels);
+    EXPECT_EQ (score.found, 10) << copy;
+    f1.push_back (score.f1);
+  }
+  const auto [lowest, highest] = std::minmax_element (f1.begin (), f1.end ());
+  EXPECT_LT (*highest - *lowest, 0.01) << *lowest << " to " << *highest;
+  EXPECT_GT (*lowest, 0.96);
+}
+
 TEST (Scenario, CubeTooNoisyForAnyCellIsSeededByGroupsOfThickCells)
 {
   // The cube at σ = 3 % of its edge (the issue's is 1 %): every cell that holds one face alone is
@@ -1536,7 +1570,9 @@ TEST (Scenario, LayersOfANoisyFaceAreMergedIntoOnePlane)
   // stays a plane of its own. Measured without the narrowed rim retest (issue #6's thirty-fourth
   // session): with it one of those layers is no plane of its own to begin with (layer merge off: 1
   // fragment; on: one layer merged, none left); the defaults' result is checked too. Without the
-  // layer merge, the final volume layers drop one of those layers too (1 fragment left): off here.
+  // layer merge, the final volume layers drop one of those layers too (1 fragment left), and the
+  // step sides within the bands (part of the step regions) hand a layer's samples, interleaved with
+  // the face's, to the face, which holds twice as many of their neighbours (0 left): both off here.
   const Detection defaults = detectScene ("room");
   const Detection merged = detectScene ("room", {}, true, pcl::rspd::NormalScale::Automatic,
                                         [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) { s.setLeftRimRetest (false); });
@@ -1547,6 +1583,7 @@ TEST (Scenario, LayersOfANoisyFaceAreMergedIntoOnePlane)
                                          s.setLayerMerge (false);
                                          EXPECT_FALSE (s.getLayerMerge ());
                                          s.setFinalVolumeLayerCheck (false);
+                                         s.setStepRegions (false);
                                        });
   EXPECT_EQ (defaults.score.found, 12);
   EXPECT_EQ (defaults.score.fragments, 0);

@@ -84,8 +84,9 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
   * Growth gives a sample in the overlap to whichever plane reached it first: the wall, grown first,
   * keeps up to 30 % of a window's samples, scattered over it, and hands the window the wall's noise
   * along its rim. Within the overlap, distance cannot tell; where the sample lies on the surface can,
-  * and its neighbours' planes say that. Planes offset by less than the wider band are left alone:
-  * one surface in two parts, or a step within noise. One pass, reading the labels before it (the
+  * and its neighbours' planes say that. Planes offset by less than the wider band are left alone
+  * unless \a within_bands: one surface in two parts, or a step within noise, where the plane that
+  * holds most of a region holds most of each sample's neighbours in it too. One pass, reading the labels before it (the
   * result does not depend on the thread count); a sample in a cluster of its plane's samples within
   * the other plane moves on a later pass, once the cluster's rim has.
   * \param[in] points samples
@@ -94,11 +95,15 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
   * \param[in] num_threads OpenMP threads (0: default)
   * \param[in,out] patches members updated (planes kept as they are)
   * \param[in,out] labels per-sample patch label, updated
+  * \param[in] within_bands also between parallel planes offset by no more than the wider band, once
+  *            settleStepRegions has given each its regions (DetectorParameters::step_regions): along
+  *            the rim of a window inside a wall's band, the wall's samples in its noise tail lie
+  *            nearer the window, and their neighbours, not their distance, say where they lie
   * \return samples moved
   */
 std::size_t
 settleStepSides (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band, int num_threads,
-                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+                 std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels, bool within_bands = false);
 
 } // namespace rspd
 } // namespace pcl

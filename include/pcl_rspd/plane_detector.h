@@ -480,10 +480,13 @@ struct DetectorParameters
   /** \brief Departure (step regions, see settleStepRegions): before the step sides' samples, a
     * plane's regions that lie off it on one side (as the step split finds them) go to the parallel
     * plane beside them on that side, offset within the wider noise band, when their members lie
-    * nearer to it (median distance, by two standard errors); passes until none moves (at most 8). Where a step is under the plane's noise band (a window 10 cm deep
-    * in a facade at σ = 4 cm, 3σ band 12 cm) the step sides move no sample, and a majority of
-    * neighbours does not move a block of the window's samples that the wall holds. false = the step
-    * sides' samples alone. */
+    * nearer to it (median distance, by two standard errors); passes until none moves (at most 8);
+    * then the step sides' passes judge samples between such planes too (their rims: the wall's
+    * samples in its noise tail beyond a window's edge lie nearer the window, but their neighbours are
+    * the wall's). Where a step is under the planes' noise bands (a window 10 cm deep in a facade at
+    * σ = 4 cm, 3σ band 12 cm) the step sides alone move no sample, and once the regions have moved,
+    * a majority of neighbours no longer hands a plane the other's blocks. false = the step sides
+    * between planes offset beyond their bands alone. */
   bool step_regions = true;
   /** \brief Departure (plane support, see releaseUnsupportedMembers): last of all, a member on or
     * beyond its plane's rim whose in-plane gap to the rest of the plane is more than
