@@ -10,14 +10,9 @@
 # RSPD_BIN=DIR for another).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=${RSPD_BIN:-./build}
-data=../shared/data
-rows=scripts/sweep_rows.txt
-if [ $# -gt 0 ] && [ "$1" != "--" ]; then rows=$1; shift; fi
-[ $# -gt 0 ] && [ "$1" = "--" ] && shift
-seg_args=("$@")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=scripts/scene_rows.sh
+source scripts/scene_rows.sh
+row_script_args "$@"
 
 echo "| row | as given | x1000 | 1 km away | rotation 1 | rotation 2 | rotation 3 | largest change |"
 echo "|---|---|---|---|---|---|---|---|"
@@ -38,6 +33,4 @@ tag, v = sys.argv[1], [float(x) for x in sys.argv[2:]]
 d = max(abs(x - v[0]) for x in v)
 print("| %s | %s | %.4f%s |" % (tag, " | ".join("%.4f" % x for x in v), d, " **over 0.01**" if d > 0.01 else ""))' "$tag" "${cells[@]}"
 }
-# shellcheck source=scripts/scene_rows.sh
-source scripts/scene_rows.sh
 each_row "$rows" "$tmp" row

@@ -9,14 +9,9 @@
 # RSPD_BIN picks another build directory, e.g. a copy of the build before the change.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=${RSPD_BIN:-./build}
-data=../shared/data
-rows=scripts/sweep_rows.txt
-if [ $# -gt 0 ] && [ "$1" != "--" ]; then rows=$1; shift; fi
-[ $# -gt 0 ] && [ "$1" = "--" ] && shift
-seg_args=("$@")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=scripts/scene_rows.sh
+source scripts/scene_rows.sh
+row_script_args "$@"
 
 row ()
 {
@@ -40,6 +35,4 @@ labels = b"".join(body[i * stride + at:i * stride + at + w] for i in range(n))
 print("%-40s %s" % (sys.argv[2], hashlib.sha1(labels).hexdigest()))
 EOF
 }
-# shellcheck source=scripts/scene_rows.sh
-source scripts/scene_rows.sh
 each_row "$rows" "$tmp" row

@@ -1,4 +1,23 @@
-# Sourced by scripts/sweep.sh and scripts/peer_sweep.sh: the rows of a sweep list, one scene at a time.
+# Sourced by scripts/sweep.sh, peer_sweep.sh, label_digests.sh and invariance.sh: the rows of a sweep
+# list, one scene at a time, and the command line the row scripts share.
+#
+#   row_script_args "$@"
+#
+# Parses "[ROWS] [-- rspd_segment options]": sets rows (default scripts/sweep_rows.txt) and
+# seg_args, bin (RSPD_BIN, default ./build) and data, and tmp, a directory removed on exit.
+row_script_args ()
+{
+  bin=${RSPD_BIN:-./build}
+  data=../shared/data
+  rows=scripts/sweep_rows.txt
+  if [ $# -gt 0 ] && [ "$1" != "--" ]; then rows=$1; shift; fi
+  [ $# -gt 0 ] && [ "$1" = "--" ] && shift
+  seg_args=("$@")
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+}
+
+# The rows, one scene at a time:
 #
 #   each_row ROWS TMPDIR HANDLER
 #

@@ -12,14 +12,9 @@
 # Needs a build (scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=${RSPD_BIN:-./build} # RSPD_BIN: another build directory
-data=../shared/data
-rows=scripts/sweep_rows.txt
-if [ $# -gt 0 ] && [ "$1" != "--" ]; then rows=$1; shift; fi
-[ $# -gt 0 ] && [ "$1" = "--" ] && shift
-seg_args=("$@")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=scripts/scene_rows.sh
+source scripts/scene_rows.sh
+row_script_args "$@"
 
 echo "| row | F1 | precision | recall | found | fragments | false planes | claimed |"
 echo "|---|---|---|---|---|---|---|---|"
@@ -33,6 +28,4 @@ claimed = 100.0 * j["unlabelled_claimed"] / j["unlabelled"] if j["unlabelled"] e
 print("| %s | %.4f | %.4f | %.4f | %d/%d | %d | %d | %.2f %% |" % (sys.argv[1], j["f1"], j["precision"], j["recall"],
       j["found"], j["planes"], j["fragments"], j["false_planes"], claimed))' "$1"
 }
-# shellcheck source=scripts/scene_rows.sh
-source scripts/scene_rows.sh
 each_row "$rows" "$tmp" row

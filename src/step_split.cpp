@@ -363,12 +363,18 @@ settleStepRegions (const PointSet& points, const NeighborGraph& graph, const std
   // Each plane's partners, sorted: parallel (normals within either's MND) and offset within the
   // wider band, where the step sides move no sample.
   std::vector<std::vector<std::uint32_t>> partners (count);
+  bool any = false;
   for (std::uint32_t a = 0; a < count; ++a)
     for (std::uint32_t b = 0; b < count; ++b)
       if (b != a && !patches[a].members.empty () && !patches[b].members.empty () &&
           normalsCompatible (patches[a], patches[b]) &&
           std::abs ((patches[b].center - patches[a].center).dot (patches[a].normal)) <= std::max (band[a], band[b]))
+      {
         partners[a].push_back (b);
+        any = true;
+      }
+  if (!any)
+    return 0; // most scenes: no per-sample scratch to allocate, no labels to copy
   std::vector<std::uint32_t> next (labels);
   StepScratch scratch (points.size ());
 #pragma omp parallel num_threads(resolveThreads (num_threads))
