@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--thick-follow on|off] [--support on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -129,6 +129,9 @@ const char* const kHelp =
     "  --noisy-ladder on|off  once such seeds seeded planes of eps points noisier than every plane\n"
     "                   found, the noisy seeds left are offered again against those, while a step\n"
     "                   seeds such a noisier plane (default on; off = one step)\n"
+    "  --noisy-t2 on|off  a plane a noisy seed seeded whose points, once grown, fail the\n"
+    "                   paper's normal test (T2) is dropped (default off: kept on its seed's\n"
+    "                   estimate; faces whose normals are noise fail it too)\n"
     "  --thick-follow on|off  where noisy seeds seeded planes noisier than the small-plane pass's\n"
     "                   thick cells may be, its thick cells are collected again up to them\n"
     "                   (default on; needs --small-thick-join on)\n"
@@ -142,6 +145,9 @@ const char* const kHelp =
     "                   neighbours' spacing from the rest of the plane or more than 2 ahead of\n"
     "                   all of it, and in no other plane's noise band, leaves it; repeated\n"
     "                   while that exposes more (default on; off = the paper)\n"
+    "  --support-clutter on|off  with --support on, a point whose plane is no denser within\n"
+    "                   its noise band than the clutter outside it, around the point, leaves it\n"
+    "                   too, wherever it lies (default on; off = rims alone)\n"
     "  --final-refit on|off  once the planes' points are settled, each plane becomes the\n"
     "                   least-squares plane of its points within 2.5 robust sigma before the\n"
     "                   last passes, and again for the planes written (default on; off = the\n"
@@ -285,8 +291,10 @@ struct Options
   bool noisy_groups = true;
   bool noisy_lone = true;
   bool noisy_ladder = true;
+  bool noisy_t2 = false;
   bool thick_follow = true;
   bool support = true;
+  bool support_clutter = true;
   bool final_refit = true;
   LeftNormals left_normals = LeftNormals::Auto;
   bool connected_parts = true;
@@ -445,6 +453,8 @@ parseArguments (int argc, char** argv)
       o.noisy_lone = option.choice ("on", "off");
     else if (arg == "--noisy-ladder")
       o.noisy_ladder = option.choice ("on", "off");
+    else if (arg == "--noisy-t2")
+      o.noisy_t2 = option.choice ("on", "off");
     else if (arg == "--thick-follow")
       o.thick_follow = option.choice ("on", "off");
     else if (arg == "--step-sides")
@@ -465,6 +475,8 @@ parseArguments (int argc, char** argv)
     }
     else if (arg == "--support")
       o.support = option.choice ("on", "off");
+    else if (arg == "--support-clutter")
+      o.support_clutter = option.choice ("on", "off");
     else if (arg == "--final-refit")
       o.final_refit = option.choice ("on", "off");
     else if (arg == "--connected-parts")
@@ -705,8 +717,10 @@ run (const Options& o)
   seg.setNoisySeedGroups (o.noisy_groups);
   seg.setNoisyLoneSeeds (o.noisy_lone);
   seg.setNoisyGroupLadder (o.noisy_ladder);
+  seg.setNoisyGrownT2 (o.noisy_t2);
   seg.setThickCellsFollowNoisySeeds (o.thick_follow);
   seg.setSupportCheck (o.support);
+  seg.setSupportClutter (o.support_clutter);
   seg.setFinalRefit (o.final_refit);
   seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
   seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);
@@ -758,10 +772,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu noisy seeds' planes dropped as where a volume of points ends, %zu kept by the small-plane "
        "pass (%zu brought to eps by completion, %zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends (%zu as layers inside a denser plane's band), %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved in regions and %zu one at a time, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged, %zu dropped once grown as failing T2), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends (%zu as layers inside a denser plane's band), %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved in regions and %zu one at a time, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released (%zu amid clutter as dense as their plane), %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.volume_layers, stats.small_seeds, stats.small_completed, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.in_band_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_region_moved, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.noisy_past_t2, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.in_band_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_region_moved, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.clutter_released, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)

@@ -500,8 +500,8 @@ normalsDenyBend (const PointSet& points, const DetectorParameters& params, const
 
 /** The planes noisy seeds seeded, judged once grown: split where two flat planes meeting at an
   * edge explain one that is not flat (DetectorParameters::noisy_bent_split), then every one still
-  * not flat dropped, with every plane under \a min_size samples. Each plane's flatness is measured
-  * once. */
+  * not flat, or whose members' estimate fails T2 (DetectorParameters::noisy_grown_t2), dropped, with
+  * every plane under \a min_size samples. Each plane's flatness is measured once. */
 void
 judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std::size_t min_size,
                   std::vector<PlanarPatch>& patches, DetectorStatistics& st)
@@ -526,6 +526,19 @@ judgeNoisyPlanes (const PointSet& points, const DetectorParameters& params, std:
       flat[p] = isFlatPatch (c, judge, patches[p], true) || normalsDenyBend (points, params, patches[p], c);
     }
   }
+  if (params.noisy_grown_t2)
+    for (std::size_t p = 0; p < patches.size (); ++p)
+    {
+      // Past T2 the normal test admits half of all directions: the plane has run into clutter or
+      // onto the faces around it (bounded_reestimation kept its seed's estimate meanwhile).
+      PlaneEstimate grown;
+      if (flat[p] && patches[p].retested && estimatePlane (points, patches[p].members, params, grown) &&
+          !(grown.mnd () < params.max_normal_deviation))
+      {
+        flat[p] = 0;
+        ++st.noisy_past_t2;
+      }
+    }
   std::size_t kept = 0;
   for (std::size_t p = 0; p < patches.size (); ++p)
   {
@@ -1319,7 +1332,8 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
     // the samples every pass before it admitted.
     labels = labelSamples (points.size (), patches);
     st.unsupported = releaseUnsupportedMembers (points, graph, noiseBands (points, params, patches),
-                                                params.num_threads, patches, labels);
+                                                params.num_threads, patches, labels, params.support_clutter,
+                                                &st.clutter_released);
   }
   lap ("plane support");
   if (params.final_refit)

@@ -179,9 +179,52 @@ admittingGap (const PointSet& points, const NeighborGraph& graph, const PlanarPa
   return gap <= kSupportGapRatio * static_cast<double> (typical) ? typical : std::numeric_limits<float>::quiet_NaN ();
 }
 
+namespace
+{
+/** Volume of the ball of radius \a r about the origin between the planes z = \a a and z = \a b. */
+double
+ballSlice (double r, double a, double b)
+{
+  a = std::max (a, -r);
+  b = std::min (b, r);
+  if (!(b > a))
+    return 0.0;
+  const double r2 = r * r;
+  return M_PI * ((r2 * b - b * b * b / 3.0) - (r2 * a - a * a * a / 3.0));
+}
+
+/** The clutter share (see releaseUnsupportedMembers): whether member \a i of \a plane has, in its
+  * k-neighbourhood's ball, its plane's samples within the \a band no denser than the unlabelled
+  * samples outside the band. */
+bool
+amidAsDenseClutter (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double band,
+                    const std::vector<std::uint32_t>& labels, std::uint32_t i)
+{
+  const std::uint32_t l = labels[i];
+  const Eigen::Vector3d p = points.points[i].cast<double> ();
+  double r2 = 0.0;
+  std::size_t own = 0, off = 0;
+  graph.forEachNeighbor (i, [&] (std::uint32_t m) {
+    const Eigen::Vector3d q = points.points[m].cast<double> ();
+    r2 = std::max (r2, (q - p).squaredNorm ());
+    own += labels[m] == l;
+    off += labels[m] == kNoPatch && std::abs ((q - plane.center).dot (plane.normal)) > band;
+  });
+  if (off == 0)
+    return false;
+  const double r = std::sqrt (r2);
+  const double d = (p - plane.center).dot (plane.normal); // the band spans [-band - d, band - d] about i
+  const double in_band = ballSlice (r, -band - d, band - d);
+  const double outside = 4.0 / 3.0 * M_PI * r2 * r - in_band;
+  // own / in_band <= off / outside, without dividing (a ball wholly inside the band: outside 0).
+  return static_cast<double> (own) * outside <= static_cast<double> (off) * in_band;
+}
+} // namespace
+
 std::size_t
 releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
-                           int num_threads, std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels)
+                           int num_threads, std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels,
+                           bool clutter_share, std::size_t* clutter_released)
 {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (labels.size ());
   const int threads = resolveThreads (num_threads);
@@ -199,6 +242,7 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
   std::vector<std::uint8_t> release (labels.size (), 0);  // released in an earlier round
   std::vector<std::uint8_t> fresh (labels.size (), 0);    // released in this round
   std::vector<std::uint8_t> grouped (labels.size (), 0);  // in a small detached group
+  std::vector<std::uint8_t> amid_clutter (clutter_share ? labels.size () : 0, 0); // released by the clutter share
   std::vector<double> spread; // per plane, gapSpreads of the first round
   // Per member, the lowest and highest index in its graph row (rows are sorted), read in the first
   // round: a later round decodes only the rows whose range holds one of its releases, not all.
@@ -284,7 +328,15 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
     {
       const std::uint32_t i = static_cast<std::uint32_t> (ii);
       fresh[i] = 0;
-      if (labels[i] == kNoPatch || !candidate[i] || !affected[i])
+      if (labels[i] == kNoPatch || !affected[i])
+        continue;
+      if (clutter_share && amidAsDenseClutter (points, graph, patches[labels[i]], band[labels[i]], labels, i))
+      {
+        fresh[i] = 1; // the clutter share (DetectorParameters::support_clutter), for every member
+        amid_clutter[i] = 1;
+        continue;
+      }
+      if (!candidate[i])
         continue;
       if (std::isinf (gap[i]))
       {
@@ -363,6 +415,8 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
     }
   }
 
+  if (clutter_released)
+    *clutter_released = static_cast<std::size_t> (std::count (amid_clutter.begin (), amid_clutter.end (), 1));
   std::size_t released = 0;
   for (auto& patch : patches)
   {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace pcl::rspd;
 
@@ -43,11 +44,38 @@ gridWith (const std::vector<Eigen::Vector3f>& extra)
 }
 
 std::size_t
-run (Scene& s, int threads = 0)
+run (Scene& s, int threads = 0, bool clutter_share = false, std::size_t* clutter_released = nullptr,
+     double band_width = 0.01)
 {
   const NeighborGraph g = rspd_test::bruteForceGraph (s.set.points, kK);
-  std::vector<double> band (s.patches.size (), 0.01);
-  return releaseUnsupportedMembers (s.set, g, band, threads, s.patches, s.labels);
+  std::vector<double> band (s.patches.size (), band_width);
+  return releaseUnsupportedMembers (s.set, g, band, threads, s.patches, s.labels, clutter_share, clutter_released);
+}
+
+/** The grid (plane 0) and, beyond its rim, a box of uniform clutter (x in [1.2, 2.4], y in [0, 1],
+  * z in [-0.6, 0.6], about 0.2 apart) whose samples within kSheetBand of z = 0 plane 0 holds too:
+  * the sheet a noisy plane's band takes from the clutter. \a sheet receives their indices. */
+constexpr double kSheetBand = 0.05;
+
+Scene
+gridAndClutterSheet (std::vector<std::uint32_t>& sheet)
+{
+  Scene s = gridWith ({});
+  std::mt19937 rng (11);
+  std::uniform_real_distribution<float> x (1.2f, 2.4f), y (0.0f, 1.0f), z (-0.6f, 0.6f);
+  for (int i = 0; i < 180; ++i)
+  {
+    s.set.points.emplace_back (x (rng), y (rng), z (rng));
+    s.set.normals.push_back (Eigen::Vector3f::UnitZ ());
+    s.set.input_indices.push_back (static_cast<pcl::index_t> (s.set.input_indices.size ()));
+    if (std::abs (s.set.points.back ().z ()) < kSheetBand)
+    {
+      sheet.push_back (static_cast<std::uint32_t> (s.set.size () - 1));
+      s.patches[0].members.push_back (sheet.back ());
+    }
+  }
+  s.labels = labelSamples (s.set.size (), s.patches);
+  return s;
 }
 } // namespace
 
@@ -354,4 +382,64 @@ TEST (MemberGaps, DuplicatedSamplesAreNoSpacing)
   const OpenScene o = openLast (std::move (s), 1);
   EXPECT_NEAR (o.gaps[19 * 20 + 10], 0.05, 1e-5);
   EXPECT_NEAR (admitted (o, 800), 0.05, 1e-5);
+}
+
+TEST (ClutterShare, ASheetOfClutterInThePlanesBandIsReleased)
+{
+  // Each sheet sample's 12 neighbours reach about 0.28 into the clutter around it: the plane's
+  // samples in the band's slice of that ball are no denser than the clutter in the rest of it, so
+  // the sheet is released, as the rim rules alone do not release it (it is no rim, and its gaps are
+  // its own neighbours' gaps). The grid is denser than the clutter by far.
+  std::vector<std::uint32_t> sheet;
+  Scene on = gridAndClutterSheet (sheet);
+  ASSERT_GE (sheet.size (), 10u);
+  Scene off = on;
+  std::size_t by_share = 0;
+  run (on, 0, true, &by_share, kSheetBand);
+  for (const auto i : sheet)
+    EXPECT_EQ (on.labels[i], kNoPatch) << i;
+  EXPECT_GT (by_share, sheet.size () / 2);
+  ASSERT_EQ (on.patches.size (), 1u);
+  EXPECT_EQ (on.patches[0].members.size (), 400u); // the grid keeps every sample, its rim too
+
+  run (off, 0, false, nullptr, kSheetBand);
+  std::size_t kept = 0;
+  for (const auto i : sheet)
+    kept += off.labels[i] == 0u;
+  EXPECT_GT (kept, sheet.size () / 2);
+}
+
+TEST (ClutterShare, ARimBesideAnUnlabelledSurfaceIsKept)
+{
+  // An unlabelled wall rises beside the grid's rim (a surface no plane took, as a tank beside a
+  // floor): the rim samples have the wall on one side, but their plane is denser in its band.
+  Scene s = gridWith ({});
+  rspd_test::addRectangle (s.set, {1.0f, 0, 0.05f}, {0, 1, 0}, {0, 0, 1}, 20, 20);
+  s.labels = labelSamples (s.set.size (), s.patches);
+  EXPECT_EQ (run (s, 0, true), 0u);
+  EXPECT_EQ (s.patches[0].members.size (), 400u);
+}
+
+TEST (ClutterShare, SameReleaseAtAnyScaleOffsetAndThreadCount)
+{
+  std::vector<std::uint32_t> sheet;
+  Scene a = gridAndClutterSheet (sheet);
+  Scene b = a;
+  for (auto& p : b.set.points)
+    p = p * 1000.0f + Eigen::Vector3f (1e6f, 0, 0);
+  PlaneEstimate e;
+  e.center = Eigen::Vector3d (1e6, 0, 0);
+  e.normal = Eigen::Vector3d::UnitZ ();
+  e.distance_halfwidth = 10.0;
+  e.angle_halfwidth = 0.1;
+  b.patches[0].setEstimate (e);
+  Scene c = a;
+  const std::size_t released = run (a, 1, true, nullptr, kSheetBand);
+  const NeighborGraph gb = rspd_test::bruteForceGraph (b.set.points, kK);
+  const std::vector<double> band_b (1, 1000.0 * kSheetBand);
+  EXPECT_EQ (releaseUnsupportedMembers (b.set, gb, band_b, 0, b.patches, b.labels, true), released);
+  EXPECT_EQ (run (c, 2, true, nullptr, kSheetBand), released);
+  EXPECT_GE (released, sheet.size ());
+  EXPECT_EQ (a.labels, b.labels);
+  EXPECT_EQ (a.labels, c.labels);
 }

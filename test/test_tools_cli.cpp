@@ -343,6 +343,10 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_steps_on.pcd", {"--step-sides", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_step_regions_on.pcd", {"--step-regions", "on"}));
   labels ("r.pcd", "room_step_regions_off.pcd", {"--step-regions=off"}); // accepted (status 0)
+  EXPECT_TRUE (room == labels ("r.pcd", "room_noisy_t2_off.pcd", {"--noisy-t2", "off"}));
+  labels ("r.pcd", "room_noisy_t2_on.pcd", {"--noisy-t2=on"}); // accepted (status 0)
+  EXPECT_TRUE (room == labels ("r.pcd", "room_support_clutter_on.pcd", {"--support-clutter", "on"}));
+  labels ("r.pcd", "room_support_clutter_off.pcd", {"--support-clutter=off"}); // accepted (status 0)
   EXPECT_TRUE (room == labels ("r.pcd", "room_thick_on.pcd", {"--thick-join", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_small_thick_on.pcd", {"--small-thick-join", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
@@ -433,7 +437,7 @@ TEST (SegmentCli, EverySwitchAndValueIsAccepted)
   const std::vector<std::string> on_off{
     "--coplanar-merge", "--left-retest", "--position-planes", "--tail-odds", "--surrounding-clutter", "--member-gaps", "--release",
     "--released-planes", "--edge-sides", "--edge-corners", "--edge-wedges", "--thick-join", "--small-thick-join",
-    "--noisy-groups", "--noisy-lone", "--noisy-ladder", "--thick-follow", "--step-sides", "--step-regions", "--support",
+    "--noisy-groups", "--noisy-lone", "--noisy-ladder", "--noisy-t2", "--thick-follow", "--step-sides", "--step-regions", "--support", "--support-clutter",
     "--final-refit", "--connected-parts", "--bent-split", "--layer-merge", "--layer-steps", "--step-split", "--across-steps",
     "--bent-side-mnd", "--edge-normals", "--shifted-grid", "--bounded-reestimate", "--noisy-bent-split",
     "--volume-layers", "--final-volume-layers", "--in-band-layers", "--flat-layers", "--small-completion", "--curved-check",

@@ -82,17 +82,29 @@ constexpr double kOneSidedResultant = 0.5;
   * the rule does not depend on scale or density. The rule peels: up to kSupportRounds rounds, each judging again the members next to the last round's
   * releases. Each round's passes read the labels before it: the result does not depend on the
   * thread count.
+  *
+  * With \a clutter_share (DetectorParameters::support_clutter), a member anywhere in its plane,
+  * rim or not, is also released when its plane is no denser in its noise band than the clutter
+  * outside the band: within the ball its k-neighbourhood spans (radius R, to its farthest
+  * neighbour), the plane's samples per volume of the band's slice of the ball are at most the
+  * unlabelled samples per volume of the rest of the ball. A sheet of clutter that a noisy plane's
+  * band took is that clutter's density by construction, while a plane's own samples, even a sparse
+  * wall's among 20 % outliers, are many times denser within a band a few σ wide. Counts over
+  * volumes of one ball are ratios: no scale enters.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] band per patch, the distance within which its own samples lie (the noise band)
   * \param[in] num_threads OpenMP threads (0: default)
   * \param[in,out] patches members updated; planes left without members are removed
   * \param[in,out] labels per-sample patch label, updated (kNoPatch for the released samples)
+  * \param[in] clutter_share also release members whose plane is no denser than the clutter there
+  * \param[out] clutter_released if given, the samples released for that alone
   * \return samples released
   */
 std::size_t
 releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, const std::vector<double>& band,
-                           int num_threads, std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+                           int num_threads, std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels,
+                           bool clutter_share = false, std::size_t* clutter_released = nullptr);
 
 /** \brief Member gaps (departure, DetectorParameters::member_gaps): the in-plane gaps by which the
   * members next to the \a open samples vouch for them in the last assignment.

@@ -765,6 +765,17 @@ public:
   bool
   getSupportCheck () const { return params_.support_check; }
 
+  /** \brief Clutter share (default true; false = the plane support's rim rules alone): with the
+    * plane support, a member whose plane, within its neighbourhood, is no denser inside its noise
+    * band than the unlabelled samples outside it leaves it wherever it lies, as a sheet of clutter
+    * a noisy plane's band took. See pcl::rspd::releaseUnsupportedMembers and
+    * pcl::rspd::DetectorParameters::support_clutter. */
+  void
+  setSupportClutter (bool enable);
+  /** \brief Whether members amid clutter as dense as their plane are released. */
+  bool
+  getSupportClutter () const { return params_.support_clutter; }
+
   /** \brief Final refit (default true; false = the paper's robust estimate throughout): once the
     * planes' samples are settled, each plane's centre and normal become the least-squares plane of
     * its members within 2.5 robust sigmas, before the last assignment, the edge and step sides and
@@ -1020,6 +1031,15 @@ public:
   /** \brief Whether the noisy seeds climb the noise ladder. */
   bool
   getNoisyGroupLadder () const { return params_.noisy_group_ladder; }
+  /** \brief Noisy planes past T2 (default false: kept on their seed's estimate): a plane a noisy
+    * seed seeded, judged once grown, is dropped where its members' estimate fails T2, as a plane run
+    * into clutter or onto the faces around it; off by default, as faces rough enough that their
+    * normals are noise fail it too. See pcl::rspd::DetectorParameters::noisy_grown_t2. */
+  void
+  setNoisyGrownT2 (bool enable);
+  /** \brief Whether noisy seeds' grown planes must pass T2 on their members. */
+  bool
+  getNoisyGrownT2 () const { return params_.noisy_grown_t2; }
   /** \brief Thick cells that follow the noisy seeds (default true; false = the bound of the planes
     * found before the pass): where noisy small seeds seeded planes noisier than the small-plane
     * pass's thick cells may be, its thick cells are collected again up to the noisiest such plane's

@@ -530,6 +530,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSupportCheck (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setSupportClutter (bool enable)
+{
+  params_.support_clutter = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setFinalRefit (bool enable)
 {
   params_.final_refit = enable;
@@ -734,6 +741,13 @@ template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setNoisyGroupLadder (bool enable)
 {
   params_.noisy_group_ladder = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNoisyGrownT2 (bool enable)
+{
+  params_.noisy_grown_t2 = enable;
   invalidate ();
 }
 
