@@ -193,29 +193,17 @@ ballSlice (double r, double a, double b)
   return M_PI * ((r2 * b - b * b * b / 3.0) - (r2 * a - a * a * a / 3.0));
 }
 
-/** The clutter share (see releaseUnsupportedMembers): whether member \a i of \a plane has, in its
-  * k-neighbourhood's ball, its plane's samples within the \a band no denser than the unlabelled
-  * samples outside the band. */
+/** The clutter share (see releaseUnsupportedMembers): whether a member whose graph neighbours hold
+  * \a own samples of its plane and \a off unlabelled samples outside its \a band, the farthest at
+  * \a reach, has, in the ball of that radius, its plane's samples within the band no denser than
+  * those unlabelled samples outside it; \a d is its signed distance to its plane. */
 bool
-amidAsDenseClutter (const PointSet& points, const NeighborGraph& graph, const PlanarPatch& plane, double band,
-                    const std::vector<std::uint32_t>& labels, std::uint32_t i)
+amidAsDenseClutter (std::size_t own, std::size_t off, double reach, double d, double band)
 {
-  const std::uint32_t l = labels[i];
-  const Eigen::Vector3d p = points.points[i].cast<double> ();
-  double r2 = 0.0;
-  std::size_t own = 0, off = 0;
-  graph.forEachNeighbor (i, [&] (std::uint32_t m) {
-    const Eigen::Vector3d q = points.points[m].cast<double> ();
-    r2 = std::max (r2, (q - p).squaredNorm ());
-    own += labels[m] == l;
-    off += labels[m] == kNoPatch && std::abs ((q - plane.center).dot (plane.normal)) > band;
-  });
   if (off == 0)
     return false;
-  const double r = std::sqrt (r2);
-  const double d = (p - plane.center).dot (plane.normal); // the band spans [-band - d, band - d] about i
-  const double in_band = ballSlice (r, -band - d, band - d);
-  const double outside = 4.0 / 3.0 * M_PI * r2 * r - in_band;
+  const double in_band = ballSlice (reach, -band - d, band - d); // the band spans [-band - d, band - d] about it
+  const double outside = 4.0 / 3.0 * M_PI * reach * reach * reach - in_band;
   // own / in_band <= off / outside, without dividing (a ball wholly inside the band: outside 0).
   return static_cast<double> (own) * outside <= static_cast<double> (off) * in_band;
 }
@@ -242,7 +230,9 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
   std::vector<std::uint8_t> release (labels.size (), 0);  // released in an earlier round
   std::vector<std::uint8_t> fresh (labels.size (), 0);    // released in this round
   std::vector<std::uint8_t> grouped (labels.size (), 0);  // in a small detached group
-  std::vector<std::uint8_t> amid_clutter (clutter_share ? labels.size () : 0, 0); // released by the clutter share
+  // Per member, the clutter share's verdict (clutter_share), measured with its other figures; a
+  // member it holds for is released in the same round, so at the end it marks those releases.
+  std::vector<std::uint8_t> amid_clutter (clutter_share ? labels.size () : 0, 0);
   std::vector<double> spread; // per plane, gapSpreads of the first round
   // Per member, the lowest and highest index in its graph row (rows are sorted), read in the first
   // round: a later round decodes only the rows whose range holds one of its releases, not all.
@@ -268,13 +258,21 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
           continue;
         const Eigen::Vector3d& normal = patches[l].normal;
         const Eigen::Vector3d p = points.points[i].cast<double> ();
+        const double d = (p - patches[l].center).dot (normal);
         bool near_other = false;
         std::uint32_t lo = std::numeric_limits<std::uint32_t>::max (), hi = 0;
-        std::size_t count = 0;
+        std::size_t count = 0, off = 0; // neighbours in the plane; unlabelled ones outside its band
+        double reach2 = 0.0;
         graph.forEachNeighbor (i, [&] (std::uint32_t m) {
           lo = std::min (lo, m);
           hi = std::max (hi, m);
           const std::uint32_t o = labels[m];
+          if (clutter_share)
+          {
+            const Eigen::Vector3d q = points.points[m].cast<double> () - p;
+            reach2 = std::max (reach2, q.squaredNorm ());
+            off += o == kNoPatch && std::abs (q.dot (normal) + d) > band[l];
+          }
           if (o == kNoPatch)
             return;
           if (o != l)
@@ -285,6 +283,8 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
           const Eigen::Vector3d q = points.points[m].cast<double> () - p;
           along[count++] = q - q.dot (normal) * normal;
         });
+        if (clutter_share)
+          amid_clutter[i] = amidAsDenseClutter (count, off, std::sqrt (reach2), d, band[l]);
         for (std::size_t t = 0; t < count; ++t)
           lengths[t] = along[t].norm ();
         double nearest = HUGE_VAL;
@@ -330,10 +330,9 @@ releaseUnsupportedMembers (const PointSet& points, const NeighborGraph& graph, c
       fresh[i] = 0;
       if (labels[i] == kNoPatch || !affected[i])
         continue;
-      if (clutter_share && amidAsDenseClutter (points, graph, patches[labels[i]], band[labels[i]], labels, i))
+      if (clutter_share && amid_clutter[i])
       {
         fresh[i] = 1; // the clutter share (DetectorParameters::support_clutter), for every member
-        amid_clutter[i] = 1;
         continue;
       }
       if (!candidate[i])

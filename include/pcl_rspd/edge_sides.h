@@ -86,9 +86,9 @@ settleEdgeSides (const PointSet& points, const NeighborGraph& graph, const std::
   * along its rim. Within the overlap, distance cannot tell; where the sample lies on the surface can,
   * and its neighbours' planes say that. Planes offset by less than the wider band are left alone
   * unless \a within_bands: one surface in two parts, or a step within noise, where the plane that
-  * holds most of a region holds most of each sample's neighbours in it too. One pass, reading the labels before it (the
-  * result does not depend on the thread count); a sample in a cluster of its plane's samples within
-  * the other plane moves on a later pass, once the cluster's rim has.
+  * holds most of a region holds most of each sample's neighbours in it too. One pass, reading the
+  * labels before it (the result does not depend on the thread count); a sample in a cluster of its
+  * plane's samples within the other plane moves on a later pass, once the cluster's rim has.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] band per patch, the distance within which its own samples lie (the noise band)

@@ -174,14 +174,15 @@ struct DetectorParameters
     * estimate of its members fails T2 (MND at or past max_normal_deviation). Such a seed was let in
     * on looser terms than the paper's; grown, its plane runs over whatever its band and its wide
     * MND admit (bounded_reestimation then keeps its seed's estimate), and past T2 its normal test
-    * admits half of all directions: a cell of a rough box's top and a sliver of its side (MND 59.8°,
-    * let in by the noise ladder at twice 34°) grew through 20 % outliers into a plane of 4,953
-    * samples, 1,841 of them outliers spread over 13 m of the scene (boxes, layout 204, 540,000 points, σ 2.9 mm, 20 %
-    * outliers: F1 0.888, two false planes; with this rule 0.967). Off by default: where faces are
-    * so rough that their k-neighbourhoods' normals are noise, their own planes fail T2 on their
-    * members (the boxes at σ 1 cm, whose roughest box is at 15 cm: 22 -> 17 of 32 planes, F1 0.816
-    * -> 0.760), and the boxes at layout 390 (20 % outliers) lost the roughest box's top (32 -> 31).
-    * true = such a plane is dropped; false = kept on its seed's estimate. */
+    * admits half of all directions: a cell of a rough box's top and a sliver of its side (MND
+    * 59.8°, let in by the noise ladder at twice 34°) grew through 20 % outliers into a plane of
+    * 4,953 samples, 1,841 of them outliers spread over 13 m of the scene (boxes, layout 204, 540,000
+    * points, σ 2.9 mm, 20 % outliers: F1 0.888, two false planes; with this rule 0.967, and 0.989
+    * with support_clutter too). Off by default: where faces are so rough that their
+    * k-neighbourhoods' normals are noise, their own planes fail T2 on their members (the boxes at
+    * σ 1 cm, whose roughest box is at 15 cm: 22 -> 17 of 32 planes, F1 0.816 -> 0.760), and the
+    * boxes at layout 390 (20 % outliers) lost the roughest box's top (32 -> 31). true = such a plane
+    * is dropped; false = kept on its seed's estimate. */
   bool noisy_grown_t2 = false;
   /** \brief Departure (part of small_cell_thick_join): where noisy seeds (groups or lone) seeded planes
     * noisier than the thick cells' bound of the pass (the noisiest plane found before it), the
@@ -512,18 +513,18 @@ struct DetectorParameters
   /** \brief Departure (clutter share, part of support_check, see releaseUnsupportedMembers): with
     * the plane support, a member wherever it lies in its plane leaves it where, within its
     * k-neighbourhood's ball, its plane's samples inside the noise band are no denser than the
-    * unlabelled samples outside it; releases peel as the plane support's. A noisy plane in clutter takes, by its band
-    * and its wide MND, the sheet of the clutter inside its band, and its samples' neighbourhoods
-    * reach far into the clutter around it: the boxes, layout 204, 20 % outliers, the σ 4.4 cm box's
-    * top held 184 outliers 0.1-2 m beyond its face, with 12-42 % of their neighbours in the plane
-    * against 60-100 % for the face's own samples. No member of such a sheet is on its rim, and its
-    * gaps are its own neighbours'. A plain majority (fewer neighbours in the plane than in none)
-    * released the far, sparse walls of rooms in 20 % outliers too (room layout 738: 1,283 samples of
-    * walls, F1 0.985 -> 0.962); comparing densities, their samples stay. Asking also that the
-    * plane's samples be fewer than those unlabelled outside the band kept the cubes at σ 1 % among
-    * outliers as they were (their edges lose up to 0.0016 of F1 without it) but gave back most of
-    * the sheets of the boxes at layout 390 (F1 0.980 -> 0.924): not kept. false = the plane
-    * support's rim rules alone. */
+    * unlabelled samples outside it; releases peel as the plane support's. A noisy plane in clutter
+    * takes, by its band and its wide MND, the sheet of the clutter inside its band, and its
+    * samples' neighbourhoods reach far into the clutter around it: the boxes, layout 204, 20 %
+    * outliers, the σ 4.4 cm box's top held 184 outliers 0.1-2 m beyond its face, with 12-42 % of
+    * their neighbours in the plane against 60-100 % for the face's own samples. No member of such a
+    * sheet is on its rim, and its gaps are its own neighbours'. A plain majority (fewer neighbours in
+    * the plane than in none) released the far, sparse walls of rooms in 20 % outliers too (room
+    * layout 738: 1,283 samples of walls, F1 0.985 -> 0.962); comparing densities, their samples
+    * stay. Asking also that the plane's samples be fewer than those unlabelled outside the band kept
+    * the cubes at σ 1 % among outliers as they were (their edges lose up to 0.0016 of F1 without it)
+    * but gave back most of the sheets of the boxes at layout 390 (F1 0.980 -> 0.924): not kept.
+    * false = the plane support's rim rules alone. */
   bool support_clutter = true;
   /** \brief Departure (final refit, see refitPlanes): once the planes' samples are settled (after the
     * layer merge), each plane's C and N become the least-squares plane of its members within 2.5
@@ -788,7 +789,7 @@ struct DetectorStatistics
   std::size_t bent_joined = 0;       ///< of the planes then, those joined to another as one face (joinSplitFaces)
   std::size_t noisy_bent_planes = 0; ///< noisy seeds' planes split at an edge before they are judged flat (noisy_bent_split)
   std::size_t noisy_past_t2 = 0;     ///< noisy seeds' planes dropped once grown as failing T2 (noisy_grown_t2)
-  std::size_t clutter_released = 0;  ///< of unsupported, members released with fewer neighbours in their plane than in none (support_clutter)
+  std::size_t clutter_released = 0;  ///< of unsupported, members released amid clutter as dense as their plane (support_clutter)
   std::size_t edge_moved = 0;        ///< samples the edge-side rule gave to the other plane (edge_sides)
   std::size_t edge_cornered = 0;     ///< samples inside a corner given to the nearer plane (edge_corners)
   std::size_t edge_outside = 0;      ///< samples outside an edge kept by the farther plane (edge_wedges)
