@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-parts on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -148,6 +148,9 @@ const char* const kHelp =
     "  --support-clutter on|off  with --support on, a point whose plane is no denser within\n"
     "                   its noise band than the clutter outside it, around the point, leaves it\n"
     "                   too, wherever it lies (default on; off = rims alone)\n"
+    "  --final-parts on|off  after that, a plane whose points form separate pieces of surface\n"
+    "                   is split into them, and a plane of one piece keeps only the points its\n"
+    "                   points join to it through neighbour links (default on; off = as left)\n"
     "  --final-refit on|off  once the planes' points are settled, each plane becomes the\n"
     "                   least-squares plane of its points within 2.5 robust sigma before the\n"
     "                   last passes, and again for the planes written (default on; off = the\n"
@@ -295,6 +298,7 @@ struct Options
   bool thick_follow = true;
   bool support = true;
   bool support_clutter = true;
+  bool final_parts = true;
   bool final_refit = true;
   LeftNormals left_normals = LeftNormals::Auto;
   bool connected_parts = true;
@@ -477,6 +481,8 @@ parseArguments (int argc, char** argv)
       o.support = option.choice ("on", "off");
     else if (arg == "--support-clutter")
       o.support_clutter = option.choice ("on", "off");
+    else if (arg == "--final-parts")
+      o.final_parts = option.choice ("on", "off");
     else if (arg == "--final-refit")
       o.final_refit = option.choice ("on", "off");
     else if (arg == "--connected-parts")
@@ -721,6 +727,7 @@ run (const Options& o)
   seg.setThickCellsFollowNoisySeeds (o.thick_follow);
   seg.setSupportCheck (o.support);
   seg.setSupportClutter (o.support_clutter);
+  seg.setFinalParts (o.final_parts);
   seg.setFinalRefit (o.final_refit);
   seg.setLeftNormalRefit (o.left_normals == LeftNormals::Trimmed);
   seg.setLeftNormalRefitOnGivenNormals (o.left_normals != LeftNormals::Pca);
@@ -772,10 +779,10 @@ run (const Options& o)
   const pcl::rspd::DetectorStatistics& stats = seg.getStatistics ();
   log ("detect: %.3f s, %zu planes (eps = %zu, k = %d, %zu cells tested, %zu seed patches (%zu dropped as outliers, %zu of them seeded again), %zu planes seeded by groups of thick cells, %zu noisy seeds' planes dropped as where a volume of points ends, %zu kept by the small-plane "
        "pass (%zu brought to eps by completion, %zu by groups of its thick cells, %zu by groups of its noisy seeds (%zu past the noise ladder's first step), thick cells collected again %zu times, %zu on the %zu left points' trimmed or narrowed normals, %zu on the shifted grid, %zu as faces beside a plane), %zu of its cells seeded by their inliers, %d grow-merge iterations, %zu re-estimations (%zu kept within T2), %zu merges, "
-       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged, %zu dropped once grown as failing T2), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends (%zu as layers inside a denser plane's band), %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved in regions and %zu one at a time, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released (%zu amid clutter as dense as their plane), %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
+       "%zu far members released, %zu planes seeded by them and %zu given back, %zu planes split off, %zu dropped as curved (%zu tubes among them and the cut parts), %zu split at an edge (%zu cut parts dropped as curved, %zu joined again as one face; %zu noisy seeds' planes split before they were judged, %zu dropped once grown as failing T2), %zu split off at a step, %zu merged as layers, %zu across a step dropped, %zu dropped as where a volume of points ends (%zu as layers inside a denser plane's band), %zu edge samples moved (%zu inside corners), %zu kept outside edges and %zu released, %zu step samples moved in regions and %zu one at a time, %zu left beyond their members' spacing, %zu dropped as curved once given their tails, %zu beyond a rim released (%zu amid clutter as dense as their plane), %zu joined to their plane by no chain of its points released and %zu planes split off at the end, %zu planes found by position among what was left, %zu planes left below eps dropped%s)",
        t_detect, planes.size (), seg.getResolvedMinPatchSize (), seg.getNumberOfNeighboursUsed (), stats.cells_tested, stats.seed_patches,
        stats.outlier_seeds, stats.retested_seeds, stats.joined_seeds, stats.volume_layers, stats.small_seeds, stats.small_completed, stats.small_joined_seeds, stats.small_noisy_groups, stats.small_ladder_seeds, stats.thick_rebound, stats.small_seeds_trimmed, stats.left_refitted, stats.small_seeds_shifted, stats.small_seeds_beside, stats.rim_seeds, stats.iterations, stats.reestimations, stats.kept_estimates, stats.merges, stats.released,
-       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.noisy_past_t2, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.in_band_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_region_moved, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.clutter_released, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
+       stats.released_planes, stats.restored, stats.split_planes, stats.curved_planes, stats.curved_tubes, stats.bent_planes, stats.curved_parts, stats.bent_joined, stats.noisy_bent_planes, stats.noisy_past_t2, stats.steps_split, stats.layers_merged, stats.across_steps, stats.final_volume_layers, stats.in_band_layers, stats.edge_moved + stats.edge_cornered, stats.edge_cornered, stats.edge_outside, stats.edge_released, stats.step_region_moved, stats.step_moved, stats.member_gap_refused, stats.late_curved_planes, stats.unsupported, stats.clutter_released, stats.final_strays, stats.final_split, stats.position_planes, stats.below_epsilon, stats.hit_iteration_cap ? ", iteration cap hit" : "");
   if (o.edge_normals)
     log ("edge-aware normals: %zu of %zu narrowed to one face", stats.edge_narrowed_normals, valid);
   if (o.depth_level_dither)

@@ -1336,6 +1336,13 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
                                                 &st.clutter_released);
   }
   lap ("plane support");
+  if (params.final_parts && !patches.empty ())
+  {
+    // Final parts (departure, see DetectorParameters::final_parts): on the members every pass left.
+    labels = labelSamples (points.size (), patches);
+    st.final_split = splitDisconnectedPlanes (points, graph, params, patches, labels, true, &st.final_strays);
+  }
+  lap ("final parts");
   if (params.final_refit)
     refitPlanes (points, params.num_threads, patches); // on the final members: the planes returned
   lap ("final refit");

@@ -201,3 +201,89 @@ TEST (ConnectedParts, ResultDoesNotDependOnTheThreadCount)
   for (std::size_t l = 0; l < p1.size (); ++l)
     EXPECT_EQ (p1[l].members, p2[l].members);
 }
+
+namespace
+{
+/** A 0.5 m square of 625 samples and, 0.2 m beside it on its plane, a 0.1 m square of 25 (fewer than
+  * ε = 50), joined by \a bridge samples along the line between them (none: apart), all in one plane. */
+PointSet
+squareAndStray (int bridge)
+{
+  PointSet s;
+  rspd_test::addRectangle (s, {0, 0, 0}, {0.5f, 0, 0}, {0, 0.5f, 0}, 25, 25);
+  rspd_test::addRectangle (s, {0.7f, 0.2f, 0}, {0.1f, 0, 0}, {0, 0.1f, 0}, 5, 5);
+  for (int t = 0; t < bridge; ++t)
+  {
+    s.points.emplace_back (0.5f + 0.2f * (t + 0.5f) / bridge, 0.25f, 0.0f);
+    s.normals.push_back (Eigen::Vector3f (1, 0, 1).normalized ()); // no inliers: not even core
+    s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+  }
+  return s;
+}
+} // namespace
+
+TEST (ConnectedParts, FinalPartsReleaseWhatNoChainOfMembersJoinsToTheOnlyPiece)
+{
+  // One piece of surface and a small square apart from it: the connected parts leave the plane as
+  // it is (PartsSmallerThanEpsilonStayWithThePlane); the final parts (release_strays) release the
+  // square, which no chain of the plane's members joins to the piece.
+  const PointSet s = squareAndStray (0);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<PlanarPatch> patches = onePlane (s.size ());
+  std::vector<std::uint32_t> labels = labelSamples (s.size (), patches);
+  std::size_t strays = 99;
+  EXPECT_EQ (splitDisconnectedPlanes (s, g, rspd_test::unitParameters (1), patches, labels, true, &strays), 0u);
+  EXPECT_EQ (strays, 25u);
+  ASSERT_EQ (patches.size (), 1u);
+  EXPECT_EQ (patches[0].members.size (), 625u);
+  EXPECT_TRUE (std::is_sorted (patches[0].members.begin (), patches[0].members.end ()));
+  EXPECT_EQ (patches[0].first_index, 0u);
+  for (std::size_t i = 0; i < s.size (); ++i)
+    EXPECT_EQ (labels[i], i < 625 ? 0u : kNoPatch) << i;
+}
+
+TEST (ConnectedParts, FinalPartsKeepWhatAChainOfAnyMembersJoins)
+{
+  // The same square joined to the piece by a line of members that fail the inlier test (no core
+  // samples, no part of their own): the chain is the plane's, so nothing is released. And a plane
+  // of two pieces is split as the connected parts split it.
+  const PointSet s = squareAndStray (20);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<PlanarPatch> patches = onePlane (s.size ());
+  std::vector<std::uint32_t> labels = labelSamples (s.size (), patches);
+  const std::vector<std::uint32_t> before = labels;
+  std::size_t strays = 99;
+  EXPECT_EQ (splitDisconnectedPlanes (s, g, rspd_test::unitParameters (1), patches, labels, true, &strays), 0u);
+  EXPECT_EQ (strays, 0u);
+  EXPECT_EQ (labels, before);
+
+  const Bridged b = makeBridged (20);
+  const NeighborGraph gb = rspd_test::bruteForceGraph (b.set.points, 8);
+  std::vector<PlanarPatch> split = onePlane (b.set.size ()), last = split;
+  std::vector<std::uint32_t> split_labels = labelSamples (b.set.size (), split), last_labels = split_labels;
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, gb, rspd_test::unitParameters (1), split, split_labels), 1u);
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, gb, rspd_test::unitParameters (1), last, last_labels, true, &strays), 1u);
+  EXPECT_EQ (strays, 0u);
+  EXPECT_EQ (split_labels, last_labels);
+}
+
+TEST (ConnectedParts, FinalPartsDoNotDependOnScaleOrThreadCount)
+{
+  PointSet s = squareAndStray (0);
+  const NeighborGraph g = rspd_test::bruteForceGraph (s.points, 8);
+  std::vector<PlanarPatch> p1 = onePlane (s.size ()), p2 = p1;
+  std::vector<std::uint32_t> l1 = labelSamples (s.size (), p1), l2 = l1;
+  splitDisconnectedPlanes (s, g, rspd_test::unitParameters (1), p1, l1, true);
+  splitDisconnectedPlanes (s, g, rspd_test::unitParameters (2), p2, l2, true);
+  EXPECT_EQ (l1, l2);
+  // ×1000 and 1 km away: the same graph, the plane's band and centre with it.
+  for (auto& p : s.points)
+    p = 1000.0f * p + Eigen::Vector3f (1000.0f, 0, 0);
+  std::vector<std::uint32_t> all (s.size ());
+  for (std::uint32_t i = 0; i < s.size (); ++i)
+    all[i] = i;
+  std::vector<PlanarPatch> p3 {rspd_test::makePatch (all, {1000.0, 0, 0}, {0, 0, 1}, 10.0, 0.1)};
+  std::vector<std::uint32_t> l3 = labelSamples (s.size (), p3);
+  splitDisconnectedPlanes (s, rspd_test::bruteForceGraph (s.points, 8), rspd_test::unitParameters (1), p3, l3, true);
+  EXPECT_EQ (l1, l3);
+}

@@ -988,6 +988,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (StepRegions),
     RSPD_SWITCH (SupportCheck),
     RSPD_SWITCH (SupportClutter),
+    RSPD_SWITCH (FinalParts),
     RSPD_SWITCH (NoisyGrownT2),
     RSPD_SWITCH (FinalRefit),
     RSPD_SWITCH (CoplanarMerge),

@@ -347,6 +347,8 @@ TEST (SegmentCli, DepartureSwitches)
   labels ("r.pcd", "room_noisy_t2_on.pcd", {"--noisy-t2=on"}); // accepted (status 0)
   EXPECT_TRUE (room == labels ("r.pcd", "room_support_clutter_on.pcd", {"--support-clutter", "on"}));
   labels ("r.pcd", "room_support_clutter_off.pcd", {"--support-clutter=off"}); // accepted (status 0)
+  EXPECT_TRUE (room == labels ("r.pcd", "room_final_parts_on.pcd", {"--final-parts", "on"}));
+  labels ("r.pcd", "room_final_parts_off.pcd", {"--final-parts=off"}); // accepted (status 0)
   EXPECT_TRUE (room == labels ("r.pcd", "room_thick_on.pcd", {"--thick-join", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_small_thick_on.pcd", {"--small-thick-join", "on"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_parts_on.pcd", {"--connected-parts", "on"}));
@@ -438,6 +440,7 @@ TEST (SegmentCli, EverySwitchAndValueIsAccepted)
     "--coplanar-merge", "--left-retest", "--position-planes", "--tail-odds", "--surrounding-clutter", "--member-gaps", "--release",
     "--released-planes", "--edge-sides", "--edge-corners", "--edge-wedges", "--thick-join", "--small-thick-join",
     "--noisy-groups", "--noisy-lone", "--noisy-ladder", "--noisy-t2", "--thick-follow", "--step-sides", "--step-regions", "--support", "--support-clutter",
+    "--final-parts",
     "--final-refit", "--connected-parts", "--bent-split", "--layer-merge", "--layer-steps", "--step-split", "--across-steps",
     "--bent-side-mnd", "--edge-normals", "--shifted-grid", "--bounded-reestimate", "--noisy-bent-split",
     "--volume-layers", "--final-volume-layers", "--in-band-layers", "--flat-layers", "--small-completion", "--curved-check",

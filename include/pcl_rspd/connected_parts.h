@@ -35,17 +35,23 @@ namespace rspd
   * such pieces, each becomes a plane (largest first keeps the plane's place; ties to the lower
   * sample index) and is estimated again; every other member joins the piece of a graph neighbour in
   * it (the lowest piece), or is released where it has none (one hop: a member chained farther is
-  * clutter between the pieces).
+  * clutter between the pieces). With \a release_strays (DetectorParameters::final_parts, on the final
+  * members), a plane of one such piece keeps only the members that a chain of graph edges between
+  * its members joins to the piece: the rest was claimed by distance alone, through clutter that has
+  * since left the plane.
   * \param[in] points samples
   * \param[in] graph k-NN graph
   * \param[in] params constants (min_patch_size is the smallest part that becomes a plane)
   * \param[in,out] patches planes; new parts are appended
-  * \param[in,out] labels per-sample patch label, rewritten when a plane is split
+  * \param[in,out] labels per-sample patch label, rewritten when a plane is split or loses members
+  * \param[in] release_strays also trim a plane of one piece to the members joined to it (see above)
+  * \param[out] strays_released if given, the members so released
   * \return planes added
   */
 std::size_t
 splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, const DetectorParameters& params,
-                         std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels);
+                         std::vector<PlanarPatch>& patches, std::vector<std::uint32_t>& labels,
+                         bool release_strays = false, std::size_t* strays_released = nullptr);
 
 } // namespace rspd
 } // namespace pcl

@@ -776,6 +776,16 @@ public:
   bool
   getSupportClutter () const { return params_.support_clutter; }
 
+  /** \brief Final parts (default true; false = the planes as the plane support leaves them): after
+    * the plane support, a plane of two or more pieces of surface is split into them, and a plane of
+    * one keeps only the members that a chain of its members joins to it. See
+    * pcl::rspd::splitDisconnectedPlanes and pcl::rspd::DetectorParameters::final_parts. */
+  void
+  setFinalParts (bool enable);
+  /** \brief Whether the final members are cut into connected parts once more. */
+  bool
+  getFinalParts () const { return params_.final_parts; }
+
   /** \brief Final refit (default true; false = the paper's robust estimate throughout): once the
     * planes' samples are settled, each plane's centre and normal become the least-squares plane of
     * its members within 2.5 robust sigmas, before the last assignment, the edge and step sides and

@@ -537,6 +537,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setSupportClutter (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setFinalParts (bool enable)
+{
+  params_.final_parts = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setFinalRefit (bool enable)
 {
   params_.final_refit = enable;
