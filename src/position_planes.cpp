@@ -204,6 +204,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
   double noisiest_kept = 0.0;
   // The least noisy plane a ladder step turned down for its noise alone (position_ladder_rungs).
   double quietest_noise_reject = HUGE_VAL;
+  std::vector<char> mark; // position_bend_band: samples already in the set a bend is judged on
   std::vector<LocalSurface> local; // per sample searched again (surface parts), its neighbourhood's plane
 
   // Open: no plane holds the sample, and it lies in the noise band of no plane a neighbour holds
@@ -341,7 +342,32 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       const double bound =
         level * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
       const PlaneCurvature c = measureCurvature (points, best);
-      const bool flat = c.samples == 0 || c.share < chanceBendShare (c.samples, params.curved_turn_confidence);
+      bool flat = c.samples == 0 || c.share < chanceBendShare (c.samples, params.curved_turn_confidence);
+      if (!flat && params.position_bend_band)
+      {
+        // Band samples (DetectorParameters::position_bend_band): judged again with the samples
+        // beside the members, within the trimmed band and facing the plane, that no plane holds
+        // but the pass left out as lying in a neighbouring plane's band.
+        if (mark.empty ())
+          mark.assign (n, 0);
+        std::vector<std::uint32_t> wide = best;
+        for (const auto i : best)
+          mark[i] = 1;
+        const double trim = kRefitTrimSigmas * kMadScale * ds.median;
+        for (const auto i : best)
+          graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+            if (mark[j] || labels[j] != kNoPatch || free[j] ||
+                distance (points, j, plane.center, plane.normal) > trim ||
+                std::abs (points.normals[j].cast<double> ().dot (plane.normal)) < kSameFaceCos)
+              return;
+            mark[j] = 1;
+            wide.push_back (j);
+          });
+        for (const auto i : wide)
+          mark[i] = 0;
+        const PlaneCurvature cw = measureCurvature (points, wide);
+        flat = cw.samples == 0 || cw.share < chanceBendShare (cw.samples, params.curved_turn_confidence);
+      }
       const bool bent = !flat || (c.samples > 0 && isTube (c, plane.mdp));
       // On a ladder's step, a plane holds more than k samples: with fewer, no member's neighbourhood
       // lies in it, and the rough surface it claims to be is read from neighbourhoods of others (the

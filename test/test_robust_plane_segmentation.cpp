@@ -1014,6 +1014,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (NoisyGroupLadder),
     RSPD_SWITCH (PositionSurfaceParts),
     RSPD_SWITCH (PositionSurfaceNormals),
+    RSPD_SWITCH (PositionBendBand),
     RSPD_SWITCH (PositionSurfaceLadder),
     RSPD_SWITCH (PositionLadderRungs),
     RSPD_SWITCH (ThickCellsFollowNoisySeeds),

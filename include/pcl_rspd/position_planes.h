@@ -34,7 +34,9 @@ namespace rspd
   * \a noise (robust σ of their distances) by more than twice the standard error of that σ (a
   * face as noisy as the noisiest plane measures a little above it as often as below), their
   * quadric bends no more than noise would
-  * (chanceBendShare at DetectorParameters::curved_turn_confidence, the curved check's), they are no
+  * (chanceBendShare at DetectorParameters::curved_turn_confidence, the curved check's; with
+  * DetectorParameters::position_bend_band, judged again where it does with the samples beside them
+  * in its band that the pass left out as lying in a neighbouring plane's band), they are no
   * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
   * their own (liesOnNeighbourPlane); then the part is searched again without them. Where the best
   * plane is turned down the part is left. Then (DetectorParameters::position_surface_parts) what

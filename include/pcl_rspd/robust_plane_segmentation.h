@@ -528,6 +528,15 @@ public:
   /** \brief Whether members of planes searched again must face their plane. */
   bool
   getPositionSurfaceNormals () const { return params_.position_surface_normals; }
+  /** \brief Band samples in the bend (default true; false = the members alone): a plane found by
+    * position that bends beyond chance is judged again with the unlabelled samples beside it that
+    * the pass left out as lying in a neighbouring plane's band. See
+    * pcl::rspd::DetectorParameters::position_bend_band. */
+  void
+  setPositionBendBand (bool enable);
+  /** \brief Whether the position planes' bend is judged with those band samples too. */
+  bool
+  getPositionBendBand () const { return params_.position_bend_band; }
   /** \brief Noise ladder of the surface parts (default true; false = the noisiest plane found bounds
     * every plane by position): what is still left is searched again for planes up to twice as
     * noisy as the noisiest plane kept, step by step while a step keeps a noisier one. See

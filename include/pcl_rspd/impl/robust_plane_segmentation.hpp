@@ -362,6 +362,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceParts (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionBendBand (bool enable)
+{
+  params_.position_bend_band = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceNormals (bool enable)
 {
   params_.position_surface_normals = enable;
