@@ -174,6 +174,28 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     big.resize (surfaces);
     if (big.size () < (release_strays ? 1u : 2u))
       continue;
+    if (big.size () == 1)
+    {
+      // One piece of surface (release_strays): the members that no chain of the plane's members
+      // joins to it go. Why: the passes after growth claim samples by their distance to the plane
+      // wherever it reaches, and clutter inside its band joined them to it until the plane support
+      // released that clutter; what it joined is left apart (boxes layout 204 among 20 % outliers: a
+      // box's top held 592 samples of the sides of a box 3 m away, whose voxels kept it from matching
+      // its face).
+      auto& own = patches[l].members;
+      const std::uint32_t piece = chain[big.front ().second];
+      std::size_t kept = 0;
+      for (const auto m : own)
+        if (chain[m] == piece)
+          own[kept++] = m;
+      if (kept < own.size ())
+      {
+        strays += own.size () - kept;
+        own.resize (kept);
+        patches[l].first_index = *std::min_element (own.begin (), own.end ());
+      }
+      continue;
+    }
     std::sort (big.begin (), big.end (), [] (const auto& x, const auto& y) {
       return x.first != y.first ? x.first > y.first : x.second < y.second;
     });
@@ -199,28 +221,6 @@ splitDisconnectedPlanes (const PointSet& points, const NeighborGraph& graph, con
     for (std::size_t t = 0; t < open.size (); ++t)
       part[open[t]] = choice[t];
 
-    if (big.size () == 1)
-    {
-      // One piece of surface (release_strays): the members that no chain of the plane's members
-      // joins to it go. Why: the passes after growth claim samples by their distance to the plane
-      // wherever it reaches, and clutter inside its band joined them to it until the plane support
-      // released that clutter; what it joined is left apart (boxes layout 204 among 20 % outliers: a
-      // box's top held 592 samples of the sides of a box 3 m away, whose voxels kept it from matching
-      // its face).
-      auto& own = patches[l].members;
-      const std::uint32_t piece = chain[big.front ().second];
-      std::size_t kept = 0;
-      for (const auto m : own)
-        if (chain[m] == piece)
-          own[kept++] = m;
-      if (kept < own.size ())
-      {
-        strays += own.size () - kept;
-        own.resize (kept);
-        patches[l].first_index = *std::min_element (own.begin (), own.end ());
-      }
-      continue;
-    }
     std::vector<std::vector<std::uint32_t>> members (big.size ());
     for (const auto m : patches[l].members)
       if (part[m] != kNoPatch)

@@ -204,7 +204,6 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
   double noisiest_kept = 0.0;
   // The least noisy plane a ladder step turned down for its noise alone (position_ladder_rungs).
   double quietest_noise_reject = HUGE_VAL;
-  std::vector<char> mark; // position_bend_band: samples already in the set a bend is judged on
   std::vector<LocalSurface> local; // per sample searched again (surface parts), its neighbourhood's plane
 
   // Open: no plane holds the sample, and it lies in the noise band of no plane a neighbour holds
@@ -342,31 +341,30 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       const double bound =
         level * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
       const PlaneCurvature c = measureCurvature (points, best);
-      bool flat = c.samples == 0 || c.share < chanceBendShare (c.samples, params.curved_turn_confidence);
+      const auto withinChance = [&] (const PlaneCurvature& q) {
+        return q.samples == 0 || q.share < chanceBendShare (q.samples, params.curved_turn_confidence);
+      };
+      bool flat = withinChance (c);
       if (!flat && params.position_bend_band)
       {
         // Band samples (DetectorParameters::position_bend_band): judged again with the samples
         // beside the members, within the trimmed band and facing the plane, that no plane holds
         // but the pass left out as lying in a neighbouring plane's band.
-        if (mark.empty ())
-          mark.assign (n, 0);
+        ++visit; // seen[i] == visit: i is in the set judged
         std::vector<std::uint32_t> wide = best;
         for (const auto i : best)
-          mark[i] = 1;
+          seen[i] = visit;
         const double trim = kRefitTrimSigmas * kMadScale * ds.median;
         for (const auto i : best)
           graph.forEachNeighbor (i, [&] (std::uint32_t j) {
-            if (mark[j] || labels[j] != kNoPatch || free[j] ||
+            if (seen[j] == visit || labels[j] != kNoPatch || free[j] ||
                 distance (points, j, plane.center, plane.normal) > trim ||
                 std::abs (points.normals[j].cast<double> ().dot (plane.normal)) < kSameFaceCos)
               return;
-            mark[j] = 1;
+            seen[j] = visit;
             wide.push_back (j);
           });
-        for (const auto i : wide)
-          mark[i] = 0;
-        const PlaneCurvature cw = measureCurvature (points, wide);
-        flat = cw.samples == 0 || cw.share < chanceBendShare (cw.samples, params.curved_turn_confidence);
+        flat = withinChance (measureCurvature (points, wide));
       }
       const bool bent = !flat || (c.samples > 0 && isTube (c, plane.mdp));
       // On a ladder's step, a plane holds more than k samples: with fewer, no member's neighbourhood

@@ -186,6 +186,15 @@ TEST (ConnectedParts, NoSamplesOrNoPlaneChangesNothing)
   EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), none, labels), 0u);
   EXPECT_TRUE (none.empty ());
   EXPECT_EQ (std::count (labels.begin (), labels.end (), kNoPatch), static_cast<std::ptrdiff_t> (b.set.size ()));
+  // The same with the final parts' release of strays: nothing to release, and the count says so.
+  std::size_t strays = 99;
+  EXPECT_EQ (splitDisconnectedPlanes (empty, NeighborGraph (), rspd_test::unitParameters (1), none, no_labels, true, &strays), 0u);
+  EXPECT_EQ (strays, 0u);
+  strays = 99;
+  EXPECT_EQ (splitDisconnectedPlanes (b.set, g, rspd_test::unitParameters (1), none, labels, true, &strays), 0u);
+  EXPECT_EQ (strays, 0u);
+  EXPECT_TRUE (none.empty ());
+  EXPECT_EQ (std::count (labels.begin (), labels.end (), kNoPatch), static_cast<std::ptrdiff_t> (b.set.size ()));
 }
 
 TEST (ConnectedParts, ResultDoesNotDependOnTheThreadCount)
