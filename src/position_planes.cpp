@@ -366,6 +366,42 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
           });
         flat = withinChance (measureCurvature (points, wide));
       }
+      if (!flat && params.position_bend_slabs)
+      {
+        // Neighbours' slabs (DetectorParameters::position_bend_slabs): judged again without the
+        // members in the band of a plane found beside them that crosses the face. There, which of
+        // a rough face's rim samples the pass left out depended on their offsets from the face (one
+        // below it, nearer that plane's members, has one among its neighbours more often), so the
+        // rim members kept stand out of the face; outside the slabs, no offset decided. A parallel
+        // plane's slab would hold the face itself: not used.
+        ++visit; // seen[j] == visit: a left-out sample whose neighbours' planes were noted
+        std::vector<std::uint32_t> beside;
+        const auto note = [&] (std::uint32_t l) {
+          if (l != kNoPatch && std::find (beside.begin (), beside.end (), l) == beside.end () &&
+              std::abs (patches[l].normal.dot (plane.normal)) < kSameFaceCos)
+            beside.push_back (l);
+        };
+        for (const auto i : best)
+          graph.forEachNeighbor (i, [&] (std::uint32_t j) {
+            note (labels[j]);
+            if (labels[j] == kNoPatch && !free[j] && seen[j] != visit)
+            {
+              seen[j] = visit; // left out: in the band of a plane one of its neighbours holds
+              graph.forEachNeighbor (j, [&] (std::uint32_t m) { note (labels[m]); });
+            }
+          });
+        std::vector<std::uint32_t> outside;
+        for (const auto i : best)
+        {
+          const Eigen::Vector3d pi = points.points[i].cast<double> ();
+          if (std::none_of (beside.begin (), beside.end (), [&] (std::uint32_t l) {
+                return std::abs ((pi - patches[l].center).dot (patches[l].normal)) <= band[l];
+              }))
+            outside.push_back (i);
+        }
+        if (outside.size () < best.size ())
+          flat = withinChance (measureCurvature (points, outside));
+      }
       const bool bent = !flat || (c.samples > 0 && isTube (c, plane.mdp));
       // On a ladder's step, a plane holds more than k samples: with fewer, no member's neighbourhood
       // lies in it, and the rough surface it claims to be is read from neighbourhoods of others (the

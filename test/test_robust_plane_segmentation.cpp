@@ -1015,6 +1015,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (PositionSurfaceParts),
     RSPD_SWITCH (PositionSurfaceNormals),
     RSPD_SWITCH (PositionBendBand),
+    RSPD_SWITCH (PositionBendSlabs),
     RSPD_SWITCH (PositionSurfaceLadder),
     RSPD_SWITCH (PositionLadderRungs),
     RSPD_SWITCH (ThickCellsFollowNoisySeeds),

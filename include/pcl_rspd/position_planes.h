@@ -36,7 +36,9 @@ namespace rspd
   * quadric bends no more than noise would
   * (chanceBendShare at DetectorParameters::curved_turn_confidence, the curved check's; with
   * DetectorParameters::position_bend_band, judged again where it does with the samples beside them
-  * in its band that the pass left out as lying in a neighbouring plane's band), they are no
+  * in its band that the pass left out as lying in a neighbouring plane's band; with
+  * DetectorParameters::position_bend_slabs, where it still does, without the members in the bands
+  * of the planes found beside them that cross it), they are no
   * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
   * their own (liesOnNeighbourPlane); then the part is searched again without them. Where the best
   * plane is turned down the part is left. Then (DetectorParameters::position_surface_parts) what

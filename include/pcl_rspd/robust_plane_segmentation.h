@@ -537,6 +537,14 @@ public:
   /** \brief Whether the position planes' bend is judged with those band samples too. */
   bool
   getPositionBendBand () const { return params_.position_bend_band; }
+  /** \brief Neighbours' slabs in the bend (default true; false = not): a plane found by position
+    * that still bends beyond chance is judged again without its members in the bands of the planes
+    * found beside it that cross it. See pcl::rspd::DetectorParameters::position_bend_slabs. */
+  void
+  setPositionBendSlabs (bool enable);
+  /** \brief Whether the position planes' bend is judged without the neighbours' slabs too. */
+  bool
+  getPositionBendSlabs () const { return params_.position_bend_slabs; }
   /** \brief Noise ladder of the surface parts (default true; false = the noisiest plane found bounds
     * every plane by position): what is still left is searched again for planes up to twice as
     * noisy as the noisiest plane kept, step by step while a step keeps a noisier one. See

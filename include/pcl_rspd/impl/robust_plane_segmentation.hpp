@@ -369,6 +369,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setPositionBendBand (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionBendSlabs (bool enable)
+{
+  params_.position_bend_slabs = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceNormals (bool enable)
 {
   params_.position_surface_normals = enable;
