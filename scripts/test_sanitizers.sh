@@ -39,6 +39,15 @@ if [[ "${PCL_RSPD_SANITIZE_ALL:-0}" != 1 ]]; then
   [[ -n "$names" ]] && skip=(-E "^(${names})\$")
 fi
 
+# ctest starts the costliest tests first when it knows their times (Testing/Temporary/CTestCostData.txt,
+# which it writes after a run); on a fresh build it has none and runs them in order, so a long test
+# drawn last keeps one core busy alone. scripts/sanitizer_times.txt is in that file's format.
+cost=build-asan/Testing/Temporary/CTestCostData.txt
+if [[ ! -s "$cost" ]]; then
+  mkdir -p "$(dirname "$cost")"
+  { grep -v '^#' scripts/sanitizer_times.txt; echo ---; } > "$cost"
+fi
+
 # install_and_consume builds a consumer against the installed (instrumented) libpcl_rspd: the
 # consumer must link the sanitizer runtimes too, or ASan refuses to start ("ASan runtime does not
 # come first in initial library list"). CMake takes CXXFLAGS/LDFLAGS from the environment when it
