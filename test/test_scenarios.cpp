@@ -1568,8 +1568,8 @@ TEST (Scenario, RoughTopBesideItsSidesIsJudgedFlatWithoutTheirSlabs)
   // where pcl_rspd found 31 of 32 against RegionGrowing's 32. A box's top (σ 3.9 cm, 1,277
   // samples) was left to the position planes, its four sides found; the top samples left out in
   // the sides' bands were more often those below the face, so the 841 members kept bent beyond
-  // chance (0.0207 against 0.0193), with or without the band samples. Judged without its 27 members
-  // in the bands of the two long sides, it is flat (the default): 32 of 32.
+  // chance (0.0207 against 0.0193), with or without the band samples. Judged without its 42 members
+  // in the bands of its sides, it is flat (the default): 32 of 32.
   pcl::rspd::SceneOptions o;
   o.layout = 576;
   o.num_points = 185000;

@@ -399,11 +399,11 @@ struct DetectorParameters
     * samples) is judged again without the members that lie in the band of a plane found beside it
     * and crossing it (less than 45° from perpendicular). The pass left out a rough face's rim
     * samples that lie in such a band where a neighbour of theirs holds that plane: those below the
-    * face, nearer the other plane's samples, more often than those above it, so the rim members
+    * face, nearer that plane's members, more often than those above it, so the rim members
     * kept stand out of the face and curl its quadric; outside the slabs nothing was left out by its
     * offset (boxes layout 576, turned, σ 2.6 mm: a box's top at σ 3.9 cm, 841 members, bent by
-    * 0.0207 against chance's 0.0193; without the 27 members in its two long sides' bands 0.004:
-    * 31 -> 32 of 32). false = not judged so. */
+    * 0.0207 against chance's 0.0193; flat without the 42 members in its four sides' bands: 31 ->
+    * 32 of 32). false = not judged so. */
   bool position_bend_slabs = true;
   /** \brief Departure (noise ladder of the surface parts, part of position_surface_parts): once the
     * surface parts are searched, what is still left is searched again for planes up to
