@@ -392,13 +392,10 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
           });
         std::vector<std::uint32_t> outside;
         for (const auto i : best)
-        {
-          const Eigen::Vector3d pi = points.points[i].cast<double> ();
           if (std::none_of (beside.begin (), beside.end (), [&] (std::uint32_t l) {
-                return std::abs ((pi - patches[l].center).dot (patches[l].normal)) <= band[l];
+                return distance (points, i, patches[l].center, patches[l].normal) <= band[l];
               }))
             outside.push_back (i);
-        }
         if (outside.size () < best.size ())
           flat = withinChance (measureCurvature (points, outside));
       }
