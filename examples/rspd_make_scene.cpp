@@ -35,7 +35,7 @@ namespace
 {
 const char* const kUsage =
   "usage: rspd_make_scene NAME OUT_PREFIX [-n N] [--noise S] [--isotropic] [--outliers R]"
-  " [--rotate] [--scale F] [--offset X Y Z] [--seed S] [--layout L] [--no-shuffle] | rspd_make_scene --list\n"
+  " [--rotate] [--scale F] [--offset X Y Z] [--seed S] [--layout L] [--no-shuffle] [--scan-grid] | rspd_make_scene --list\n"
   "       rspd_make_scene CLOUD.pcd|CLOUD.ply OUT_PREFIX [--rotate] [--scale F] [--offset X Y Z] [--seed S]";
 
 /** \brief Whether a scene name is a cloud file to move rather than a scene to generate. */
@@ -188,6 +188,8 @@ main (int argc, char** argv)
       }
       else if (arg == "--no-shuffle")
         options.shuffle = false;
+      else if (arg == "--scan-grid")
+        options.scan_grid = true;
       else if (arg.size () > 1 && arg[0] == '-')
         throw UsageError ("unknown option '" + arg + "'");
       else
@@ -207,9 +209,9 @@ main (int argc, char** argv)
   if (isCloudFile (name))
   {
     if (options.num_points != 0 || options.noise >= 0.0 || options.isotropic_noise || options.outlier_ratio >= 0.0 ||
-        !options.shuffle || options.layout != 0)
+        !options.shuffle || options.layout != 0 || options.scan_grid)
     {
-      std::fprintf (stderr, "rspd_make_scene: -n, --noise, --isotropic, --outliers, --layout and --no-shuffle apply to generated "
+      std::fprintf (stderr, "rspd_make_scene: -n, --noise, --isotropic, --outliers, --layout, --no-shuffle and --scan-grid apply to generated "
                     "scenes, not to '%s'\n%s\n", name.c_str (), kUsage);
       return 2;
     }

@@ -410,6 +410,7 @@ struct Params
   double noise;
   bool isotropic;        ///< SceneOptions::isotropic_noise
   std::uint32_t layout;  ///< SceneOptions::layout
+  bool scan_grid;        ///< SceneOptions::scan_grid
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -810,10 +811,27 @@ buildRoom (const Params& prm, SceneRandom& rng)
   targets.push_back (ball);
 
   const std::size_t rays = prm.num_points - prm.num_outliers;
+  // Scan grid: equal steps in azimuth and elevation, about as many as the rays over the sphere
+  // (2 pi^2 / step^2 of them), column by column; the last column is cut where the rays run out.
+  // A ray lost at a corner is replaced by the grid's next (past the last column, the first again).
+  const double step = rays > 0 ? M_PI * std::sqrt (2.0 / static_cast<double> (rays)) : 1.0;
+  const std::size_t rows = std::max<std::size_t> (1, static_cast<std::size_t> (std::lround (M_PI / step)));
+  const std::size_t columns = (rays + rows - 1) / rows;
+  std::size_t cast = 0;
   g.samples.reserve (prm.num_points);
   while (g.samples.size () < rays)
   {
-    const Eigen::Vector3d d = rng.unitVector ();
+    Eigen::Vector3d d;
+    if (prm.scan_grid)
+    {
+      const double azimuth = 2.0 * M_PI * (static_cast<double> (cast / rows) + 0.5) / static_cast<double> (columns);
+      const double elevation = M_PI * ((static_cast<double> (cast % rows) + 0.5) / static_cast<double> (rows) - 0.5);
+      d = Eigen::Vector3d (std::cos (elevation) * std::cos (azimuth), std::cos (elevation) * std::sin (azimuth),
+                           std::sin (elevation));
+      ++cast;
+    }
+    else
+      d = rng.unitVector ();
     double best = std::numeric_limits<double>::infinity ();
     const RayTarget* hit = nullptr;
     for (const auto& t : targets)
@@ -902,12 +920,15 @@ makeScene (const std::string& name, const SceneOptions& options)
     throw std::invalid_argument ("scene scale must be positive and finite");
   if (!options.offset.allFinite ())
     throw std::invalid_argument ("scene offset must be finite");
+  if (options.scan_grid && name != "room")
+    throw std::invalid_argument ("a scan grid applies to the scanned room only");
 
   Params prm;
   prm.num_points = options.num_points > 0 ? options.num_points : spec->default_points;
   prm.noise = options.noise >= 0.0 ? options.noise : spec->default_noise;
   prm.isotropic = options.isotropic_noise;
   prm.layout = options.layout;
+  prm.scan_grid = options.scan_grid;
   const double ratio = options.outlier_ratio >= 0.0 ? options.outlier_ratio
                                                     : spec->default_outliers;
   prm.num_outliers = std::min (prm.num_points, static_cast<std::size_t> (

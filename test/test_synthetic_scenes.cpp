@@ -480,6 +480,53 @@ TEST (SyntheticScenes, RoomIsASingleScan)
   EXPECT_EQ (behind_cabinet, 0u);
 }
 
+TEST (SyntheticScenes, RoomScanGridCastsItsRaysOnEqualAngleSteps)
+{
+  // A scanner's grid: every ray's elevation and azimuth lie on steps of one size (rows of
+  // elevation over pi, columns of azimuth over 2 pi), about as many rays as the grid holds; the
+  // same scene and truth bookkeeping as the random rays. Noise-free, so a sample's direction from
+  // the sensor is its ray's.
+  SceneOptions o;
+  o.num_points = 20000;
+  o.noise = 0.0;
+  o.scan_grid = true;
+  const Scene scene = makeScene ("room", o);
+  checkConsistent (scene, 20000);
+  EXPECT_GE (scene.num_planes, 10);
+  const Eigen::Vector3d sensor = scene.cloud.sensor_origin_.head<3> ().cast<double> ();
+  std::vector<double> elevation, azimuth;
+  for (const auto& p : scene.cloud)
+  {
+    const Eigen::Vector3d d = (p.getVector3fMap ().cast<double> () - sensor).normalized ();
+    elevation.push_back (std::asin (d.z ()));
+    azimuth.push_back (std::atan2 (d.y (), d.x ()) < 0.0 ? std::atan2 (d.y (), d.x ()) + 2.0 * M_PI : std::atan2 (d.y (), d.x ()));
+  }
+  // The distinct values (to 1e-4 rad, far below a step of 0.03 rad) are the grid's rows and columns.
+  const auto distinct = [] (std::vector<double> v) {
+    std::sort (v.begin (), v.end ());
+    std::vector<double> out;
+    for (const double x : v)
+      if (out.empty () || x - out.back () > 1e-4)
+        out.push_back (x);
+    return out;
+  };
+  const std::vector<double> rows = distinct (elevation), columns = distinct (azimuth);
+  ASSERT_GE (rows.size (), 20u);
+  ASSERT_GE (columns.size (), 20u);
+  const double row_step = M_PI / static_cast<double> (rows.size ());
+  const double column_step = 2.0 * M_PI / static_cast<double> (columns.size ());
+  EXPECT_NEAR (row_step, column_step, 0.02 * row_step);
+  for (std::size_t r = 0; r < rows.size (); ++r)
+    EXPECT_NEAR (rows[r], -0.5 * M_PI + (static_cast<double> (r) + 0.5) * row_step, 1e-4) << r;
+  for (std::size_t c = 0; c < columns.size (); ++c)
+    EXPECT_NEAR (columns[c], (static_cast<double> (c) + 0.5) * column_step, 1e-4) << c;
+  EXPECT_LE (scene.cloud.size (), rows.size () * columns.size ());
+  EXPECT_GT (scene.cloud.size (), rows.size () * (columns.size () - 1));
+
+  // Only the scanned room has rays to lay on a grid.
+  EXPECT_THROW (makeScene ("cube", o), std::invalid_argument);
+}
+
 TEST (SyntheticScenes, SmallRoomDropsSparsePlanesConsistently)
 {
   // With few rays some small planes fall under the threshold; labels must stay consecutive.

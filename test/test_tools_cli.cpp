@@ -73,6 +73,24 @@ TEST (MakeSceneCli, IsotropicDrawsOtherNoiseOnTheSameScene)
   EXPECT_NE (rspd_test::fileText (dir.file ("a.pcd")), rspd_test::fileText (dir.file ("b.pcd")));
 }
 
+TEST (MakeSceneCli, ScanGridScansTheRoomOnly)
+{
+  // The room scanned on a grid of equal angle steps: other samples than the random rays, same
+  // truth bookkeeping; a scene without a scanner, or a given cloud, refuses the option.
+  REQUIRE_TOOL (tool, "rspd_make_scene");
+  rspd_test::TempDir dir;
+  const auto random = runTool (tool, {"room", dir.file ("a"), "-n", "3000"});
+  const auto grid = runTool (tool, {"room", dir.file ("b"), "-n", "3000", "--scan-grid"});
+  ASSERT_EQ (random.status, 0) << random.err;
+  ASSERT_EQ (grid.status, 0) << grid.err;
+  EXPECT_NE (grid.out.find ("3000 points"), std::string::npos) << grid.out;
+  EXPECT_NE (rspd_test::fileText (dir.file ("a.pcd")), rspd_test::fileText (dir.file ("b.pcd")));
+  const auto cube = runTool (tool, {"cube", dir.file ("c"), "-n", "3000", "--scan-grid"});
+  EXPECT_EQ (cube.status, 2);
+  EXPECT_NE (cube.err.find ("scanned room"), std::string::npos) << cube.err;
+  EXPECT_EQ (runTool (tool, {dir.file ("a.pcd"), dir.file ("d"), "--scan-grid"}).status, 2);
+}
+
 TEST (MakeSceneCli, ListsScenesAndRefusesBadUsage)
 {
   REQUIRE_TOOL (tool, "rspd_make_scene");

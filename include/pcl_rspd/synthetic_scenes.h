@@ -52,6 +52,12 @@ struct SceneOptions
     * independently of \a seed, so that detection can be checked on scenes of the same kind that
     * no default was chosen on. */
   std::uint32_t layout = 0;
+  /** The scanned room only: cast the rays on a regular grid of equal azimuth and elevation steps,
+    * as a laser scanner turns, instead of in uniformly random directions. Rows of samples then lie
+    * farther apart than the samples along them wherever a surface is seen obliquely, and the
+    * floor and ceiling near the poles are sampled densely along circles (SynPEB's clouds are such
+    * scans). */
+  bool scan_grid = false;
 };
 
 /** \brief A generated scene: cloud, per-point truth and per-point surface kind (same order). */
