@@ -150,7 +150,9 @@ liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const 
   beside.erase (std::unique (beside.begin (), beside.end ()), beside.end ());
   if (beside.empty ())
     return false;
-  const double own = robustSigmaAbout (points, candidate.members, candidate.center, candidate.normal);
+  // Within twice the standard error of the members' own robust σ.
+  const double own = robustSigmaAbout (points, candidate.members, candidate.center, candidate.normal) *
+                     (1.0 + 2.0 * kRobustSigmaError / std::sqrt (static_cast<double> (candidate.members.size ())));
   for (const auto o : beside)
     if (robustSigmaAbout (points, candidate.members, patches[o].center, patches[o].normal) <= own)
       return true;

@@ -8,7 +8,7 @@
 #include <pcl_rspd/patch_growth.h>      // kNoPatch
 #include <pcl_rspd/plane_curvature.h>   // measureCurvature, chanceBendShare, isTube
 #include <pcl_rspd/plane_refit.h>       // leastSquaresPlane, kRefitTrimSigmas
-#include <pcl_rspd/robust_statistics.h> // robustSpreadInPlace, kMadScale
+#include <pcl_rspd/robust_statistics.h> // robustSpreadInPlace, kMadScale, kRobustSigmaError
 
 #include <algorithm>
 #include <cmath>
@@ -31,9 +31,6 @@ constexpr std::size_t kStartsPerEpsilon = 4;
 constexpr int kFitRounds = 8;
 /** A member lies within this many \a noise of its plane (the noise band of the passes after growth). */
 constexpr double kPositionBandSigmas = 3.0;
-/** Standard error of a robust σ (kMadScale × median |d|) of n Gaussian distances, times √n: the
-  * MAD's asymptotic variance is 1.36 σ² / n. */
-constexpr double kRobustSigmaError = 1.166;
 /** A plane may be noisier than the noisiest plane found by this many standard errors of its own σ:
   * as noisy a face is as likely to measure a little above as below. The boxes' roughest box at
   * 80,000 points (layout 9): a face of 380 samples measured σ 3.17 cm against its sibling faces' 3.14

@@ -8,6 +8,8 @@
 
 #include <pcl_rspd/band_layers.h>
 #include <pcl_rspd/patch_growth.h>
+#include <pcl_rspd/plane_refit.h>
+#include <pcl_rspd/robust_statistics.h>
 
 #include <gtest/gtest.h>
 
@@ -208,6 +210,32 @@ TEST (NeighbourPlane, StripAlongANoseWithABentNormalLiesOnTheTread)
   // Its own plane right: as close to the tread's, which counts for the tread.
   const Strip flat = makeStrip (0.0, 0.0f);
   EXPECT_TRUE (liesOnNeighbourPlane (flat.set, flat.graph, flat.planes, flat.labels, flat.candidate));
+}
+
+TEST (NeighbourPlane, APieceOfThePlaneBesideFittedToItselfLiesOnItWithinTheError)
+{
+  // The strip on the tread's plane, its own plane fitted to its members by least squares: that fit
+  // is closer to them than the tread's (fitted to them, it takes some of their noise), by less
+  // than twice the standard error of their robust σ. A room scanned on a grid left such a piece
+  // (the ceiling around the zenith) to the position planes, which kept it as a plane of its own.
+  Strip s = makeStrip (0.0, 0.0f);
+  ASSERT_TRUE (leastSquaresPlane (s.set, s.candidate.members, {}, Eigen::Vector3d::Zero (), s.candidate.center,
+                                  s.candidate.normal));
+  const auto sigmaAbout = [&] (const Eigen::Vector3d& c, const Eigen::Vector3d& n) {
+    std::vector<double> d;
+    for (const auto i : s.candidate.members)
+      d.push_back (std::abs ((s.set.points[i].cast<double> () - c).dot (n)));
+    return kMadScale * medianInPlace (d);
+  };
+  const double own = sigmaAbout (s.candidate.center, s.candidate.normal);
+  const double tread = sigmaAbout (s.planes[0].center, s.planes[0].normal);
+  ASSERT_LT (own, tread); // without the error, its own plane would win
+  EXPECT_TRUE (liesOnNeighbourPlane (s.set, s.graph, s.planes, s.labels, s.candidate));
+  // Lowered by 2.5 σ, it lies off the tread, however its plane was fitted.
+  Strip low = makeStrip (0.0, 0.005f);
+  ASSERT_TRUE (leastSquaresPlane (low.set, low.candidate.members, {}, Eigen::Vector3d::Zero (), low.candidate.center,
+                                  low.candidate.normal));
+  EXPECT_FALSE (liesOnNeighbourPlane (low.set, low.graph, low.planes, low.labels, low.candidate));
 }
 
 TEST (NeighbourPlane, RecessedStripLiesOnItsOwnPlane)

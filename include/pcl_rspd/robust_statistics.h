@@ -18,6 +18,11 @@ namespace rspd
   */
 constexpr double kMadScale = 1.4826;
 
+/** \brief Standard error of a robust σ (kMadScale × median |d|) of n Gaussian distances, times √n:
+  * the MAD's asymptotic variance is 1.36 σ² / n.
+  */
+constexpr double kRobustSigmaError = 1.166;
+
 /** \brief Median of \a values by linear-time selection (std::nth_element), never a full sort.
   * For an even count it is the mean of the two middle values. The order of \a values is changed.
   * \return NaN for an empty set.
