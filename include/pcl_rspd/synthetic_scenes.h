@@ -73,7 +73,8 @@ struct Scene
 
 /** \brief Names accepted by makeScene, with their defaults (points, noise sigma, planes):
   * - "cube": 1 m cube surface (100k, 0.01, 6 planes)
-  * - "room": 6 x 5 x 3 m room ray-cast from one sensor position, with door, table, cabinet, a
+  * - "room": 6 x 5 x 3 m room ray-cast from one sensor position (rays in random directions, or on
+  *   a scanner's grid with SceneOptions::scan_grid), with door, table, cabinet, a
   *   pillar and a ball (200k, 0.005, 12 planes; density falls with distance, occluded parts empty)
   * - "staircase": 15 steps of tread + riser (100k, 0.002, 30 planes)
   * - "facade": 20 x 10 m wall with 15 recessed windows, 15 % outliers (200k, 0.03, 16 planes)
