@@ -151,8 +151,8 @@ liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const 
   if (beside.empty ())
     return false;
   // Within twice the standard error of the members' own robust σ.
-  const double own = robustSigmaAbout (points, candidate.members, candidate.center, candidate.normal) *
-                     (1.0 + 2.0 * kRobustSigmaError / std::sqrt (static_cast<double> (candidate.members.size ())));
+  const double own = robustSigmaBound (robustSigmaAbout (points, candidate.members, candidate.center, candidate.normal),
+                                       candidate.members.size (), 2.0);
   for (const auto o : beside)
     if (robustSigmaAbout (points, candidate.members, patches[o].center, patches[o].normal) <= own)
       return true;

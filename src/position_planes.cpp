@@ -8,7 +8,7 @@
 #include <pcl_rspd/patch_growth.h>      // kNoPatch
 #include <pcl_rspd/plane_curvature.h>   // measureCurvature, chanceBendShare, isTube
 #include <pcl_rspd/plane_refit.h>       // leastSquaresPlane, kRefitTrimSigmas
-#include <pcl_rspd/robust_statistics.h> // robustSpreadInPlace, kMadScale, kRobustSigmaError
+#include <pcl_rspd/robust_statistics.h> // robustSpreadInPlace, kMadScale, robustSigmaBound
 
 #include <algorithm>
 #include <cmath>
@@ -335,8 +335,7 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       // No noisier than the noisiest plane found (within the error of its own σ), flat within
       // chance, no tube, no layer of a plane found and no strip that lies on a neighbouring plane.
       const double sigma = kMadScale * ds.median;
-      const double bound =
-        level * (1.0 + kNoiseBoundErrors * kRobustSigmaError / std::sqrt (static_cast<double> (best.size ())));
+      const double bound = robustSigmaBound (level, best.size (), kNoiseBoundErrors);
       const PlaneCurvature c = measureCurvature (points, best);
       const auto withinChance = [&] (const PlaneCurvature& q) {
         return q.samples == 0 || q.share < chanceBendShare (q.samples, params.curved_turn_confidence);

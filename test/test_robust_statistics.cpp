@@ -80,3 +80,12 @@ TEST (RobustStatistics, SelectionMatchesSortOnRandomData)
     EXPECT_DOUBLE_EQ (median (v), expect);
   }
 }
+
+TEST (RobustStatistics, SigmaBoundAddsStandardErrorsThatShrinkWithTheCount)
+{
+  // Two standard errors of a robust σ of 100 samples: 2 × 1.166 / 10 of it; four times the samples,
+  // half the margin; none asked, none added.
+  EXPECT_DOUBLE_EQ (robustSigmaBound (2.0, 100, 2.0), 2.0 * (1.0 + 0.2332));
+  EXPECT_DOUBLE_EQ (robustSigmaBound (2.0, 400, 2.0) - 2.0, 0.5 * (robustSigmaBound (2.0, 100, 2.0) - 2.0));
+  EXPECT_DOUBLE_EQ (robustSigmaBound (2.0, 100, 0.0), 2.0);
+}

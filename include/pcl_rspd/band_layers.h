@@ -56,7 +56,7 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorP
 /** \brief Whether a candidate plane's members lie on a plane already found at least as closely as on
   * their own: for some plane that a graph neighbour of a member holds, the robust σ of the members'
   * distances to it is no larger than to the candidate's own plane (center, normal), within twice
-  * that σ's standard error (kRobustSigmaError σ / √n for n members).
+  * that σ's standard error (robustSigmaBound).
   *
   * The candidate's plane rests on its members' normals (the median of Eq. 4), its neighbour's on
   * thousands of samples. Samples along an edge, released by the plane across it, have normals bent

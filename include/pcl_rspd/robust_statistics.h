@@ -23,6 +23,14 @@ constexpr double kMadScale = 1.4826;
   */
 constexpr double kRobustSigmaError = 1.166;
 
+/** \brief \a sigma raised by \a errors standard errors of a robust σ measured on \a n samples
+  * (kRobustSigmaError σ / √n): a set as noisy as \a sigma measures above it that rarely. */
+inline double
+robustSigmaBound (double sigma, std::size_t n, double errors)
+{
+  return sigma * (1.0 + errors * kRobustSigmaError / std::sqrt (static_cast<double> (n)));
+}
+
 /** \brief Median of \a values by linear-time selection (std::nth_element), never a full sort.
   * For an even count it is the mean of the two middle values. The order of \a values is changed.
   * \return NaN for an empty set.
