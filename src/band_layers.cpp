@@ -11,7 +11,7 @@
 #include <pcl_rspd/robust_statistics.h> // medianInPlace, kMadScale
 #include <pcl_rspd/volume_layers.h>     // countLayerSamples, isInBandLayer
 
-#include <Eigen/Geometry> // cross
+#include <Eigen/Geometry> // cross, AlignedBox
 
 #include <algorithm>
 #include <cmath>
@@ -146,6 +146,33 @@ liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const 
       if (labels[j] != kNoPatch)
         beside.push_back (labels[j]);
     });
+  if (beside.empty ())
+  {
+    // No member has a neighbour a plane holds: the candidate is closed under the graph, each
+    // member's neighbourhood within the members (a scanner's rings below or above its head,
+    // thousands of samples within centimetres whose nearest neighbours are each other). The samples
+    // around it still count members among their nearest: the edges into it are read instead, from
+    // the labelled samples within its bounding box widened by the box's own size on each side (a
+    // scan of the cloud's coordinates; a closed candidate is rare, read only then).
+    Eigen::AlignedBox3f box;
+    for (const auto i : candidate.members)
+      box.extend (points.points[i]);
+    const Eigen::Vector3f reach = box.sizes ();
+    box.min () -= reach;
+    box.max () += reach;
+    std::vector<std::uint32_t> sorted (candidate.members);
+    std::sort (sorted.begin (), sorted.end ());
+    for (std::size_t j = 0; j < points.size (); ++j)
+      if (labels[j] != kNoPatch && box.contains (points.points[j]))
+      {
+        bool into = false;
+        graph.forEachNeighbor (j, [&] (std::uint32_t m) {
+          into = into || std::binary_search (sorted.begin (), sorted.end (), m);
+        });
+        if (into)
+          beside.push_back (labels[j]);
+      }
+  }
   std::sort (beside.begin (), beside.end ());
   beside.erase (std::unique (beside.begin (), beside.end ()), beside.end ());
   if (beside.empty ())

@@ -245,6 +245,58 @@ TEST (NeighbourPlane, RecessedStripLiesOnItsOwnPlane)
   EXPECT_FALSE (liesOnNeighbourPlane (s.set, s.graph, s.planes, s.labels, s.candidate));
 }
 
+namespace
+{
+/** The tread of makeStrip without its strip, and a dense patch over its middle, 10 x 10 samples on
+  * 1 x 1 cm (noise 2 mm, raised by \a lift), none held: the candidate, its plane parallel to the
+  * tread's. The patch's 20 nearest of each member are members, as a scanner's rings below its head
+  * are each other's: no member has a neighbour the tread holds, but the tread's samples around it
+  * count members among theirs. */
+Strip
+makeClosedPatch (float lift)
+{
+  Strip s;
+  const std::vector<std::uint32_t> tread =
+      rspd_test::addRectangle (s.set, {0, 0, 0}, {0.975f, 0, 0}, {0, 0.9f, 0}, 40, 36, 0.002f, 1);
+  // Centred between four of the tread's samples (spacing 2.4-2.5 cm).
+  const std::vector<std::uint32_t> patch =
+      rspd_test::addRectangle (s.set, {0.4825f, 0.445f, lift}, {0.01f, 0, 0}, {0, 0.01f, 0}, 10, 10, 0.002f, 3);
+  s.planes = {rspd_test::makePatch (tread, {0.5, 0.45, 0}, {0, 0, 1}, 0.01, 0.05)};
+  s.labels.assign (s.set.points.size (), kNoPatch);
+  for (const auto i : tread)
+    s.labels[i] = 0;
+  s.candidate = rspd_test::makePatch (patch, {0.4875, 0.45, lift}, {0, 0, 1}, 0.01, 0.3);
+  s.graph = rspd_test::bruteForceGraph (s.set.points, 20);
+  return s;
+}
+
+/** Whether some member of \a s's candidate has a neighbour a plane holds. */
+bool
+anyEdgeOut (const Strip& s)
+{
+  bool out = false;
+  for (const auto i : s.candidate.members)
+    s.graph.forEachNeighbor (i, [&] (std::uint32_t j) { out = out || s.labels[j] != kNoPatch; });
+  return out;
+}
+} // namespace
+
+TEST (NeighbourPlane, AClosedPatchIsSeenFromTheSamplesAroundIt)
+{
+  // On the tread: found through the edges into it.
+  const Strip on = makeClosedPatch (0.0f);
+  ASSERT_FALSE (anyEdgeOut (on)); // the case: closed under the graph
+  EXPECT_TRUE (liesOnNeighbourPlane (on.set, on.graph, on.planes, on.labels, on.candidate));
+  // 2 cm over it (10 σ): the same edges, but off the tread's plane.
+  const Strip off = makeClosedPatch (0.02f);
+  ASSERT_FALSE (anyEdgeOut (off));
+  EXPECT_FALSE (liesOnNeighbourPlane (off.set, off.graph, off.planes, off.labels, off.candidate));
+  // No plane held around it: nothing to lie on.
+  Strip alone = makeClosedPatch (0.0f);
+  alone.labels.assign (alone.labels.size (), kNoPatch);
+  EXPECT_FALSE (liesOnNeighbourPlane (alone.set, alone.graph, alone.planes, alone.labels, alone.candidate));
+}
+
 TEST (NeighbourPlane, NoPlaneBesideOrNoMembers)
 {
   Strip s = makeStrip (22.0 * kDegree, 0.0f);

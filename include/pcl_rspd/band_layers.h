@@ -54,7 +54,8 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorP
              const std::vector<std::uint32_t>& labels, const PlanarPatch& seed, bool* beside = nullptr);
 
 /** \brief Whether a candidate plane's members lie on a plane already found at least as closely as on
-  * their own: for some plane that a graph neighbour of a member holds, the robust σ of the members'
+  * their own: for some plane that a graph neighbour of a member holds (where no member has one: that
+  * a sample holds which counts a member among its neighbours), the robust σ of the members'
   * distances to it is no larger than to the candidate's own plane (center, normal), within twice
   * that σ's standard error (robustSigmaBound).
   *
@@ -69,7 +70,10 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorP
   * of the plane beside it measures a little closer to its own as often as not (a room scanned on a
   * grid: the ceiling's samples around the zenith, on rings whose neighbourhoods give normals in the
   * ceiling, 1,197 of them at σ 4.79 mm about their own plane against 4.86 about the ceiling's, were
-  * kept as a plane of their own).
+  * kept as a plane of their own). The rings of such a scan below and above its head are dense
+  * enough that a disc of them is each other's nearest: no edge leads out of it, but the floor's
+  * samples around it have members among their nearest (the grid room in layout 315 at 212,000
+  * points: 1,195 ring samples kept as a fragment of the floor without the edges into them).
   * \param[in] points samples
   * \param[in] graph their k-NN graph
   * \param[in] patches the planes found
