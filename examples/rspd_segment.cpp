@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-bend-band on|off] [--position-bend-slabs on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-parts on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-bend-band on|off] [--position-bend-slabs on|off] [--position-join on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-parts on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -91,6 +91,8 @@ const char* const kHelp =
     "                   plane's band (default on; off = its members alone)\n"
     "  --position-bend-slabs on|off  and if it still bends, again without its points in the\n"
     "                   bands of the planes found beside it (default on; off = not)\n"
+    "  --position-join on|off  a plane found by position that lies on a plane beside it gives\n"
+    "                   it its points within its band (default on; off = they stay in none)\n"
     "  --position-ladder on|off  there, planes up to twice as noisy as the noisiest kept, step by\n"
     "                   step while a step keeps a noisier one (default on; off = one step)\n"
     "  --ladder-rungs on|off  and on, a step at a time, where a step kept no plane but turned one\n"
@@ -283,6 +285,7 @@ struct Options
   bool position_normals = true;
   bool position_bend_band = true;
   bool position_bend_slabs = true;
+  bool position_join = true;
   bool position_ladder = true;
   bool ladder_rungs = true;
   bool tail_odds = true;
@@ -438,6 +441,8 @@ parseArguments (int argc, char** argv)
       o.position_bend_band = option.choice ("on", "off");
     else if (arg == "--position-bend-slabs")
       o.position_bend_slabs = option.choice ("on", "off");
+    else if (arg == "--position-join")
+      o.position_join = option.choice ("on", "off");
     else if (arg == "--position-ladder")
       o.position_ladder = option.choice ("on", "off");
     else if (arg == "--ladder-rungs")
@@ -718,6 +723,7 @@ run (const Options& o)
   seg.setPositionSurfaceNormals (o.position_normals);
   seg.setPositionBendBand (o.position_bend_band);
   seg.setPositionBendSlabs (o.position_bend_slabs);
+  seg.setPositionJoinBeside (o.position_join);
   seg.setPositionSurfaceLadder (o.position_ladder);
   seg.setPositionLadderRungs (o.ladder_rungs);
   seg.setTailOdds (o.tail_odds);

@@ -136,7 +136,7 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorP
 
 bool
 liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
-                      const std::vector<std::uint32_t>& labels, const PlanarPatch& candidate)
+                      const std::vector<std::uint32_t>& labels, const PlanarPatch& candidate, std::uint32_t* on)
 {
   if (candidate.members.empty ())
     return false;
@@ -182,7 +182,11 @@ liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const 
                                        candidate.members.size (), 2.0);
   for (const auto o : beside)
     if (robustSigmaAbout (points, candidate.members, patches[o].center, patches[o].normal) <= own)
+    {
+      if (on)
+        *on = o;
       return true;
+    }
   return false;
 }
 

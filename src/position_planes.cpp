@@ -402,16 +402,29 @@ seedPositionPlanes (const PointSet& points, const NeighborGraph& graph, const De
       // 20° from both faces, as noisy as a step above the planes found allows).
       const bool too_small_for_step = level > noise && best.size () <= static_cast<std::size_t> (graph.k ());
       const bool quiet = sigma <= bound;
+      std::uint32_t on = kNoPatch; // the plane beside it that it lies on, if that turned it down
       // The other tests, read once, and for a noisy plane only where a rung may climb to it.
       const bool sound = (quiet || (params.position_ladder_rungs && go_on)) && !bent && !too_small_for_step &&
                          (!go_on || insideASurface (graph, best)) &&
                          !isBandLayer (points, graph, params, patches, band, labels, plane) &&
-                         !liesOnNeighbourPlane (points, graph, patches, labels, plane);
+                         !liesOnNeighbourPlane (points, graph, patches, labels, plane, &on);
       if (!quiet && sound)
         quietest_noise_reject = std::min (quietest_noise_reject, sigma); // turned down for its noise alone
       if (!quiet || !sound)
       {
         turned_down = true;
+        if (on != kNoPatch && params.position_join_beside)
+        {
+          // It lies on that plane: those of its members within that plane's band are its samples,
+          // which no graph path from its members reached (a disc of a scanner's rings below its
+          // head is the floor's, under the sensor, not a hole in it).
+          for (const auto i : best)
+            if (distance (points, i, patches[on].center, patches[on].normal) <= band[on])
+            {
+              labels[i] = on;
+              patches[on].members.push_back (i);
+            }
+        }
         // A surface that bends is a curved one: the planes cut from it next would be its facets.
         if (!go_on || bent)
           break;

@@ -1016,7 +1016,7 @@ TEST (RspdSegmentCli, UsageErrorsExitTwo)
       {"--bent-split", "yes"}, {"--bent-split"}, {"--released-planes", "no"}, {"--released-planes"},
       {"--support", "yes"}, {"--support"}, {"--bounded-reestimate", "yes"}, {"--bounded-reestimate"}, {"--noisy-bent-split", "1"}, {"--noisy-bent-split"},
       {"--left-normals", "on"}, {"--left-normals"}, {"--bent-side-mnd", "yes"}, {"--bent-side-mnd"}, {"--given-normals", "on"}, {"--given-normals"},
-      {"--position-surfaces", "yes"}, {"--position-surfaces"}, {"--position-normals", "1"}, {"--position-normals"}, {"--position-ladder", "up"}, {"--position-ladder"}, {"--ladder-rungs", "yes"}, {"--ladder-rungs"}, {"--step-regions", "1"}, {"--step-regions"}, {"--noisy-t2", "yes"}, {"--noisy-t2"}, {"--support-clutter", "1"}, {"--support-clutter"}, {"--final-parts", "1"}, {"--final-parts"}, {"--position-bend-band", "1"}, {"--position-bend-band"}, {"--position-bend-slabs", "yes"}, {"--position-bend-slabs"},
+      {"--position-surfaces", "yes"}, {"--position-surfaces"}, {"--position-normals", "1"}, {"--position-normals"}, {"--position-ladder", "up"}, {"--position-ladder"}, {"--ladder-rungs", "yes"}, {"--ladder-rungs"}, {"--position-join", "yes"}, {"--position-join"}, {"--step-regions", "1"}, {"--step-regions"}, {"--noisy-t2", "yes"}, {"--noisy-t2"}, {"--support-clutter", "1"}, {"--support-clutter"}, {"--final-parts", "1"}, {"--final-parts"}, {"--position-bend-band", "1"}, {"--position-bend-band"}, {"--position-bend-slabs", "yes"}, {"--position-bend-slabs"},
   };
   for (const auto& args : cases)
   {

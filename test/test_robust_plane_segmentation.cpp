@@ -1016,6 +1016,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (PositionSurfaceNormals),
     RSPD_SWITCH (PositionBendBand),
     RSPD_SWITCH (PositionBendSlabs),
+    RSPD_SWITCH (PositionJoinBeside),
     RSPD_SWITCH (PositionSurfaceLadder),
     RSPD_SWITCH (PositionLadderRungs),
     RSPD_SWITCH (ThickCellsFollowNoisySeeds),

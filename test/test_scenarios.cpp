@@ -2412,3 +2412,43 @@ TEST (SharedData, CgalBuildingPseudoTruth)
   const Detection r = detect (cloud, truth); // pseudo ground truth: a smoke test, not a score to chase
   EXPECT_GE (r.score.found, 10);
 }
+
+TEST (Scenario, ScannersRingsBelowItsHeadAreTheFloors)
+{
+  // A room scanned on a scanner's grid (scripts/scan_grid_rows.txt, layout 315, 212,000 points,
+  // turned): below the sensor its rows close into rings, 1,195 samples within centimetres whose
+  // nearest neighbours are each other. No growth reaches them; the position planes found them as a
+  // plane, which lies on the floor: seen through the edges into it (liesOnNeighbourPlane), it is no
+  // fragment, and it gives the floor those samples (position_join_beside) instead of a hole.
+  pcl::rspd::SceneOptions o;
+  o.scan_grid = true;
+  o.layout = 315;
+  o.num_points = 212000;
+  o.noise = 0.0041;
+  o.seed = 131;
+  o.random_rotation = true;
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", o);
+  const auto with = [&scene] (bool join) {
+    return detect (scene.cloud, scene.labels, nullptr, true, pcl::rspd::NormalScale::Automatic,
+                   [join] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+                     EXPECT_TRUE (s.getPositionJoinBeside ());
+                     s.setPositionJoinBeside (join);
+                   });
+  };
+  const auto left = [&scene] (const Detection& d) { // samples of a plane that no plane holds
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < d.labels.size (); ++i)
+      n += scene.labels[i] != 0 && d.labels[i] == 0;
+    return n;
+  };
+  const Detection joined = with (true);
+  const Detection apart = with (false);
+  for (const Detection* d : {&joined, &apart})
+  {
+    EXPECT_EQ (d->score.found, 12);
+    EXPECT_EQ (d->score.fragments, 0);
+    EXPECT_EQ (d->score.false_planes, 0);
+  }
+  EXPECT_GE (left (apart), left (joined) + 1000);
+  EXPECT_GE (joined.score.f1, apart.score.f1);
+}

@@ -463,7 +463,7 @@ TEST (SegmentCli, EverySwitchAndValueIsAccepted)
     "--bent-side-mnd", "--edge-normals", "--shifted-grid", "--bounded-reestimate", "--noisy-bent-split",
     "--volume-layers", "--final-volume-layers", "--in-band-layers", "--flat-layers", "--small-completion", "--curved-check",
     "--late-curved", "--curved-turn", "--curved-fold-sides", "--tube-check", "--curved-parts", "--hinge-normals",
-    "--position-surfaces", "--position-normals", "--position-bend-band", "--position-bend-slabs", "--position-ladder", "--ladder-rungs"};
+    "--position-surfaces", "--position-normals", "--position-bend-band", "--position-bend-slabs", "--position-join", "--position-ladder", "--ladder-rungs"};
   // Options of more than two values: each value once, over the runs below.
   const std::vector<std::pair<std::string, std::vector<std::string>>> choices{
     {"--normal-scale", {"fixed", "adaptive", "auto"}},

@@ -78,10 +78,13 @@ isBandLayer (const PointSet& points, const NeighborGraph& graph, const DetectorP
   * \param[in] graph their k-NN graph
   * \param[in] patches the planes found
   * \param[in] labels per sample, the plane holding it (kNoPatch: none)
-  * \param[in] candidate its members (none held by a plane), center and normal */
+  * \param[in] candidate its members (none held by a plane), center and normal
+  * \param[out] on if given and the candidate lies on a plane: that plane (the first of those beside it
+  *   in index order that it lies on); otherwise untouched */
 bool
 liesOnNeighbourPlane (const PointSet& points, const NeighborGraph& graph, const std::vector<PlanarPatch>& patches,
-                      const std::vector<std::uint32_t>& labels, const PlanarPatch& candidate);
+                      const std::vector<std::uint32_t>& labels, const PlanarPatch& candidate,
+                      std::uint32_t* on = nullptr);
 
 /** \brief One pass of the layer merge (DetectorParameters::layer_merge): each plane A that is a layer
   * of a larger plane B's noise band joins B, and B is estimated again on both (estimatePlane).

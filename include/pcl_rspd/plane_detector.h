@@ -405,6 +405,13 @@ struct DetectorParameters
     * 0.0207 against chance's 0.0193; flat without the 42 members in its four sides' bands: 31 ->
     * 32 of 32). false = not judged so. */
   bool position_bend_slabs = true;
+  /** \brief Departure (join beside, part of position_planes): a plane found by position that lies on
+    * a plane beside it (liesOnNeighbourPlane) gives that plane its members within the plane's noise
+    * band, instead of leaving them to no plane. Neither growth nor the last assignment reached them:
+    * no graph path leads from that plane's members to them (a room scanned on a grid: the rings
+    * below the sensor, each other's nearest neighbours, a disc of 1,195 samples of the floor at
+    * layout 315 and 212,000 points). false = they stay in no plane. */
+  bool position_join_beside = true;
   /** \brief Departure (noise ladder of the surface parts, part of position_surface_parts): once the
     * surface parts are searched, what is still left is searched again for planes up to
     * noisy_group_ratio times as noisy as the noisiest plane kept (its reach as wide), step by step

@@ -40,7 +40,9 @@ namespace rspd
   * DetectorParameters::position_bend_slabs, where it still does, without the members in the bands
   * of the planes found beside them that cross it), they are no
   * tube, no layer of a plane found (isBandLayer) and lie no closer to a neighbouring plane than to
-  * their own (liesOnNeighbourPlane); then the part is searched again without them. Where the best
+  * their own (liesOnNeighbourPlane; with DetectorParameters::position_join_beside, one that lies on
+  * a plane beside it gives that plane its members within the plane's band); then the part is
+  * searched again without them. Where the best
   * plane is turned down the part is left. Then (DetectorParameters::position_surface_parts) what
   * the parts left so still hold on a surface (a sample with half of its neighbourhood, it and its k
   * neighbours, within 3 \a noise and within a quarter of the neighbourhood's radius of the

@@ -545,6 +545,14 @@ public:
   /** \brief Whether the position planes' bend is judged without the neighbours' slabs too. */
   bool
   getPositionBendSlabs () const { return params_.position_bend_slabs; }
+  /** \brief Join beside (default true; false = left in no plane): a plane found by position that lies
+    * on a plane beside it gives that plane its members within its noise band. See
+    * pcl::rspd::DetectorParameters::position_join_beside. */
+  void
+  setPositionJoinBeside (bool enable);
+  /** \brief Whether a position plane lying on a plane beside it joins that plane. */
+  bool
+  getPositionJoinBeside () const { return params_.position_join_beside; }
   /** \brief Noise ladder of the surface parts (default true; false = the noisiest plane found bounds
     * every plane by position): what is still left is searched again for planes up to twice as
     * noisy as the noisiest plane kept, step by step while a step keeps a noisier one. See

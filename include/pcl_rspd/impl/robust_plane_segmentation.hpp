@@ -376,6 +376,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setPositionBendSlabs (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setPositionJoinBeside (bool enable)
+{
+  params_.position_join_beside = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setPositionSurfaceNormals (bool enable)
 {
   params_.position_surface_normals = enable;
