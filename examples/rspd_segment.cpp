@@ -55,8 +55,9 @@ const char* const kHelp =
     "                   when they are noise at the k-scale (see --given-normals)\n"
     "  --given-normals check|keep  the input's normals are estimated again when most\n"
     "                   k-neighbourhoods resolve no surface and the normals agree with their\n"
-    "                   neighbours' no better than those neighbourhoods' PCA normals ('check', the\n"
-    "                   default, with --normal-scale auto); 'keep' uses them as given\n"
+    "                   neighbours' no better than those neighbourhoods' PCA normals, or (under\n"
+    "                   100,000 points) when most finer neighbourhoods resolve a face they tilt off\n"
+    "                   ('check', the default, with --normal-scale auto); 'keep' uses them as given\n"
     "  --depth-levels keep|dither  where the depths along the camera's axis (the file's\n"
     "                   VIEWPOINT) take a structured-light or stereo camera's levels, 'dither'\n"
     "                   draws each sample's depth again within its level's bin, for the detection\n"
@@ -810,7 +811,8 @@ run (const Options& o)
   log ("stages: prepare %.3f s, neighbour graph %.3f s (%.1f MB), normals %.3f s%s, split %.3f s, grow/merge %.3f s, "
        "outputs %.3f s",
        stats.prepare_seconds, stats.graph_seconds, static_cast<double> (stats.graph_bytes) / 1e6, stats.normals_seconds,
-       cloud.normals ? (stats.given_normals_replaced ? " (the file's were noise at this scale: estimated again)" : " (from the file)") : "",
+       cloud.normals ? (stats.given_normals_blurred ? " (the file's blurred the faces a finer neighbourhood resolves: estimated again)"
+                        : stats.given_normals_replaced ? " (the file's were noise at this scale: estimated again)" : " (from the file)") : "",
        stats.split_seconds, stats.grow_merge_seconds, stats.output_seconds);
   if (!stats.pass_seconds.empty ())
   {
@@ -823,6 +825,12 @@ run (const Options& o)
     }
     log ("grow/merge passes: %s", passes.c_str ());
   }
+  const pcl::rspd::GivenNormalCheck& given = seg.getGivenNormalCheckStatistics ();
+  if (cloud.normals && given.fine_k > 0)
+    log ("the file's normals against %d-neighbourhoods: %zu of %zu probes resolve a surface there, the file's "
+         "normal fits %zu of those worse than %.0f times its plane's residual%s",
+         given.fine_k, given.fine_resolved, given.probes,
+         given.fine_tilted, pcl::rspd::kBlurResidualRatio, stats.given_normals_blurred ? " (most: estimated again)" : "");
   const pcl::rspd::NormalScaleStatistics& scales = seg.getNormalScaleStatistics ();
   if (!scales.samples_per_scale.empty ())
   {

@@ -189,7 +189,8 @@ givenNormalsAreNoise (const std::vector<Eigen::Vector3f>& points, const Neighbor
 {
   GivenNormalCheck local;
   GivenNormalCheck& c = check ? *check : local;
-  c = GivenNormalCheck ();
+  c.probes = c.unresolved = 0; // the fine_* fields are givenNormalsBlurFaces'
+  c.given_spread = c.neighbourhood_spread = 0.0;
   const std::size_t n = points.size ();
   const int k = graph.k ();
   if (n == 0 || given.size () != n || k < 2)
@@ -244,6 +245,56 @@ givenNormalsAreNoise (const std::vector<Eigen::Vector3f>& points, const Neighbor
     return pcaNormal (i, ratio);
   });
   return c.given_spread >= c.neighbourhood_spread;
+}
+
+bool
+givenNormalsBlurFaces (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, int fine_k,
+                       int num_threads, const std::vector<Eigen::Vector3f>& given, GivenNormalCheck* check)
+{
+  GivenNormalCheck local;
+  GivenNormalCheck& c = check ? *check : local;
+  c.fine_k = fine_k;
+  c.fine_resolved = c.fine_tilted = 0;
+  const std::size_t n = points.size ();
+  const int k = graph.k ();
+  if (n == 0 || given.size () != n || fine_k < 3 || fine_k >= k)
+    return false;
+  const double bound = isotropicEigenRatioQuantile (fine_k, 0.05);
+  const std::size_t stride = std::max<std::size_t> (1, n / 4096);
+  const std::ptrdiff_t probes = static_cast<std::ptrdiff_t> ((n + stride - 1) / stride);
+  c.probes = static_cast<std::size_t> (probes); // as givenNormalsAreNoise's
+  std::size_t resolved = 0, tilted = 0;
+#pragma omp parallel num_threads(resolveThreads (num_threads))
+  {
+    // The graph's rows are stored by index: the fine_k nearest are sorted out of each row.
+    std::vector<std::pair<float, std::uint32_t>> row;
+#pragma omp for schedule(static, 64) reduction(+ : resolved, tilted)
+    for (std::ptrdiff_t p = 0; p < probes; ++p)
+    {
+      const std::uint32_t i = static_cast<std::uint32_t> (static_cast<std::size_t> (p) * stride);
+      row.clear ();
+      graph.forEachNeighbor (i, [&] (std::uint32_t j) { row.emplace_back ((points[j] - points[i]).squaredNorm (), j); });
+      std::partial_sort (row.begin (), row.begin () + fine_k, row.end ());
+      const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], fine_k, points, [&] (auto&& add) {
+        for (int t = 0; t < fine_k; ++t)
+          add (row[static_cast<std::size_t> (t)].second);
+      });
+      Eigen::Vector3f normal = Eigen::Vector3f::UnitZ ();
+      double ratio, l0, l1;
+      fitNormal (cov, normal, ratio, &l0, &l1);
+      if (!(ratio < bound))
+        continue; // no surface at the finer scale either: nothing to compare with
+      ++resolved;
+      const Eigen::Vector3d g = given[i].cast<double> ();
+      // A floor at the float rounding of the positions (1e-6 of the spread along the face, a
+      // tilt of 0.06°): noise-free faces have no residual to compare with.
+      if (g.dot (cov * g) > kBlurResidualRatio * l0 + 1e-6 * l1)
+        ++tilted;
+    }
+  }
+  c.fine_resolved = resolved;
+  c.fine_tilted = tilted;
+  return 2 * resolved > static_cast<std::size_t> (probes) && 2 * tilted > resolved;
 }
 
 void

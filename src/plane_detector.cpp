@@ -853,6 +853,7 @@ detectPlanes (const PointSet& points, const NeighborGraph& graph, const Detector
   st.graph_bytes = before.graph_bytes;
   st.normals_seconds = before.normals_seconds;
   st.given_normals_replaced = before.given_normals_replaced;
+  st.given_normals_blurred = before.given_normals_blurred;
   st.edge_narrowed_normals = before.edge_narrowed_normals;
   st.depth_levels = before.depth_levels;
   using Clock = std::chrono::steady_clock;

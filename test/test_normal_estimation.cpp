@@ -5,7 +5,9 @@
  */
 #include <pcl_rspd/neighbor_graph.h>
 #include <pcl_rspd/normal_estimation.h>
+#include <pcl_rspd/synthetic_scenes.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
@@ -297,6 +299,82 @@ TEST (NormalEstimation, GivenNormalsThatAreNoiseAtTheKScaleAreTold)
   pcl::rspd::givenNormalsAreNoise (p, graph, 2, k_scale, &check);
   EXPECT_EQ (one.given_spread, check.given_spread);
   EXPECT_EQ (one.neighbourhood_spread, check.neighbourhood_spread);
+}
+
+namespace
+{
+/** The generated staircase (30 faces) at 5,000 samples, a few hundred a face, in spatial order;
+  * \a truth: each sample's face normal (its face's least-squares plane). */
+Points
+sparseStairs (Points& truth)
+{
+  pcl::rspd::SceneOptions o;
+  o.num_points = 5000;
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
+  Points raw;
+  for (const auto& q : scene.cloud)
+    raw.push_back (q.getVector3fMap ());
+  std::vector<Eigen::Vector3f> face (static_cast<std::size_t> (scene.num_planes) + 1, Eigen::Vector3f::UnitZ ());
+  for (int l = 1; l <= scene.num_planes; ++l)
+  {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < raw.size (); ++i)
+      if (scene.labels[i] == static_cast<std::uint32_t> (l))
+      {
+        mean += raw[i].cast<double> ();
+        ++m;
+      }
+    mean /= static_cast<double> (m);
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+    for (std::size_t i = 0; i < raw.size (); ++i)
+      if (scene.labels[i] == static_cast<std::uint32_t> (l))
+      {
+        const Eigen::Vector3d d = raw[i].cast<double> () - mean;
+        cov += d * d.transpose ();
+      }
+    face[static_cast<std::size_t> (l)] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (cov).eigenvectors ().col (0).cast<float> ();
+  }
+  const std::vector<std::uint32_t> order = pcl::rspd::spatialOrder (raw, 2);
+  Points sorted (raw.size ());
+  truth.resize (raw.size ());
+  for (std::size_t i = 0; i < raw.size (); ++i)
+  {
+    sorted[i] = raw[order[i]];
+    truth[i] = face[scene.labels[order[i]]];
+  }
+  return sorted;
+}
+} // namespace
+
+TEST (NormalEstimation, GivenNormalsThatBlurTheFacesAFinerScaleResolvesAreTold)
+{
+  // PCA normals over 50 neighbours span two or three steps and turn towards the stair's slope; at
+  // 15 neighbours most samples resolve their own face, which those normals fit worse than twice its
+  // plane's residual. The faces' own normals fit them.
+  Points truth;
+  const Points p = sparseStairs (truth);
+  const KScale k = kScale (p);
+  pcl::rspd::GivenNormalCheck check;
+  EXPECT_TRUE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 2, k.normals, &check));
+  EXPECT_EQ (check.fine_k, 15);
+  EXPECT_EQ (check.probes, p.size ());
+  EXPECT_GT (2 * check.fine_resolved, check.probes);
+  EXPECT_GT (2 * check.fine_tilted, check.fine_resolved);
+  std::printf ("    k = 50 normals against 15-neighbourhoods: %zu of %zu resolved probes tilted\n", check.fine_tilted,
+               check.fine_resolved);
+  // Nor is a stair's noise, as PCA normals at that noise give it, mistaken for a tilt.
+  pcl::rspd::GivenNormalCheck exact;
+  EXPECT_FALSE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 2, truth, &exact));
+  EXPECT_LT (4 * exact.fine_tilted, exact.fine_resolved);
+  // One thread or two: the same counts.
+  pcl::rspd::GivenNormalCheck one;
+  EXPECT_TRUE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 1, k.normals, &one));
+  EXPECT_EQ (one.fine_resolved, check.fine_resolved);
+  EXPECT_EQ (one.fine_tilted, check.fine_tilted);
+  // No finer scale than the graph's, or bad input: no check.
+  EXPECT_FALSE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 50, 2, k.normals));
+  EXPECT_FALSE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 2, Points (3, Eigen::Vector3f::UnitZ ())));
 }
 
 TEST (NormalEstimation, GivenNormalsOfAResolvedSurfaceAreKept)

@@ -851,7 +851,8 @@ struct DetectorStatistics
   double graph_seconds = 0.0;        ///< building the k-NN graph (wall time)
   std::size_t graph_bytes = 0;       ///< memory held by the compressed k-NN graph
   double normals_seconds = 0.0;      ///< estimating normals (0 when given and kept)
-  bool given_normals_replaced = false; ///< the caller's normals were noise at the graph's scale and were estimated again (RobustPlaneSegmentation::setGivenNormalCheck)
+  bool given_normals_replaced = false; ///< the caller's normals were noise at the graph's scale, or blurred the faces, and were estimated again (RobustPlaneSegmentation::setGivenNormalCheck)
+  bool given_normals_blurred = false; ///< of those, the caller's normals blurred the faces the automatic k resolves (givenNormalsBlurFaces): the detection ran at that k
   std::size_t edge_narrowed_normals = 0; ///< normals narrowed to one face at an edge (RobustPlaneSegmentation::setEdgeAwareNormals)
   std::size_t depth_levels = 0;      ///< distinct depths of a quantized camera cloud that were dithered (RobustPlaneSegmentation::setDepthLevelDither); 0 = none
   double split_seconds = 0.0;        ///< split phase

@@ -71,7 +71,8 @@ struct RobustPlane
   *  - automatic k (setNumberOfNeighbours(50) for the paper): with normals estimated here, k = ε/2
   *    between 15 and 50, the paper's 50 from 100,000 valid points on; below that a 50-neighbourhood is
   *    as large as the smallest plane the split seeds, and no sample of such a plane has a clean normal
-  *    (pcl::rspd::automaticNumberOfNeighbours); with given normals, 50;
+  *    (pcl::rspd::automaticNumberOfNeighbours); with given normals, 50 (the automatic k when
+  *    setGivenNormalCheck finds that they blur the faces it resolves);
   *  - zero spread: the interval half-widths have floors that scale with the data (1e-6 of the
   *    patch's in-plane extent for distances, 1e-3 rad for normals), so a noise-free plane (MAD = 0,
   *    the paper's Table 5) passes and grows (setDistanceFloorRatio(0), setNormalDeviationFloor(0));
@@ -448,7 +449,10 @@ public:
     * normals do (pcl::rspd::givenNormalsAreNoise), they are noise at this scale, and normals are
     * estimated here instead, at the finest scale that resolves a surface (as without normals). PCL's
     * k = 50 normals on the 1M-point cube with noise 1 % of its edge gave no plane at all (0 of 6);
-    * estimated again, 6 of 6 (README). getStatistics().given_normals_replaced says whether it
+    * estimated again, 6 of 6 (README). Below 100,000 samples also when they blur the faces the
+    * automatic k resolves (pcl::rspd::givenNormalsBlurFaces): the detection then runs as without
+    * them, at that k (a 5,000-sample staircase on PCL's k = 50 normals: 1 of 30 planes as given, 30
+    * so). getStatistics().given_normals_replaced (and given_normals_blurred) says whether it
     * happened. */
   void
   setGivenNormalCheck (bool enable);
@@ -1286,6 +1290,11 @@ protected:
   bool
   prepareNeighbourhoods ();
 
+  /** \brief The parameters that follow k_used_ and use_given_normals_ (the small-plane pass's cell
+    * size, the second fit of what growth left). */
+  void
+  setNeighbourDependentParameters ();
+
   /** \brief Convert the detector's patches into planes_ and labels_. */
   void
   buildPlanes (const std::vector<pcl::rspd::DetectedPatch>& patches);
@@ -1306,6 +1315,7 @@ protected:
   bool left_normal_narrowing_ = true;
   bool shifted_grid_ = true;
   bool given_normal_check_ = true;
+  bool use_given_normals_ = false; ///< the last segmentation read the caller's normals (not estimated again)
   bool depth_level_dither_ = false;
   bool edge_aware_normals_ = false;
   pcl::rspd::GivenNormalCheck given_normal_check_stats_;

@@ -1047,7 +1047,8 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
     points_.points.swap (sorted);
     points_.input_indices.swap (sorted_indices);
   }
-  if (normals_)
+  use_given_normals_ = normals_ != nullptr;
+  if (use_given_normals_)
   {
     points_.normals.resize (n);
     for (std::size_t s = 0; s < n; ++s)
@@ -1056,6 +1057,15 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
       points_.normals[s] = Eigen::Vector3d (nn.normal_x, nn.normal_y, nn.normal_z).normalized ().cast<float> ();
     }
   }
+  setNeighbourDependentParameters ();
+  params_.left_normal_narrow = false; // set once the normals are known (prepareNeighbourhoods)
+  params_.shifted_small_grid = shifted_grid_;
+  return true;
+}
+
+template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setNeighbourDependentParameters ()
+{
   // The small-plane pass's cells: down to a neighbourhood, k + 1 samples, but no larger than ε/2
   // (at least 10, the paper's least ε); with k + 1 > ε (k = 50 under 51,000 points, as with the
   // caller's normals) the pass would not run at all: rspd_compare's 30,000-point staircase on PCL's
@@ -1064,11 +1074,8 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
       ? std::min<std::size_t> (static_cast<std::size_t> (k_used_ + 1), std::max<std::size_t> (10, params_.min_patch_size / 2))
       : 0;
   // Trimmed normals need no second fit; the caller's normals have a switch of their own.
-  params_.left_normal_refit =
-      normals_ ? given_normals_left_refit_ : left_normal_refit_ && normal_fit_ == pcl::rspd::NormalFit::Pca;
-  params_.left_normal_narrow = false; // set once the normals are known (prepareNeighbourhoods)
-  params_.shifted_small_grid = shifted_grid_;
-  return true;
+  params_.left_normal_refit = use_given_normals_ ? given_normals_left_refit_
+                                                 : left_normal_refit_ && normal_fit_ == pcl::rspd::NormalFit::Pca;
 }
 
 template <typename PointT, typename NormalT> bool
@@ -1078,86 +1085,113 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   const char* name = class_name.c_str ();
   const std::size_t n = points_.size ();
   const auto t0 = std::chrono::steady_clock::now ();
-  if (search_)
-  {
-    // pcl::KdTreeFLANN splits its nodes at (min + max) / 2 in float; beyond half the float range
-    // that sum overflows and FLANN aborts on an assertion (fuzz/regressions/README.md). Refuse.
-    const float limit = 0.5f * std::numeric_limits<float>::max ();
-    for (const auto i : points_.input_indices)
+  // The k_used_-nearest-neighbour graph, with the caller's search method if one was set.
+  const auto buildGraph = [&] () -> bool {
+    if (search_)
     {
-      const PointT& p = (*input_)[i];
-      if (!(std::abs (p.x) < limit && std::abs (p.y) < limit && std::abs (p.z) < limit))
+      // pcl::KdTreeFLANN splits its nodes at (min + max) / 2 in float; beyond half the float range
+      // that sum overflows and FLANN aborts on an assertion (fuzz/regressions/README.md). Refuse.
+      const float limit = 0.5f * std::numeric_limits<float>::max ();
+      for (const auto i : points_.input_indices)
       {
-        PCL_ERROR ("[pcl::%s::segment] point %d has a coordinate beyond +-%g, which the search method "
-                   "cannot index\n", name, static_cast<int> (i), static_cast<double> (limit));
+        const PointT& p = (*input_)[i];
+        if (!(std::abs (p.x) < limit && std::abs (p.y) < limit && std::abs (p.z) < limit))
+        {
+          PCL_ERROR ("[pcl::%s::segment] point %d has a coordinate beyond +-%g, which the search method "
+                     "cannot index\n", name, static_cast<int> (i), static_cast<double> (limit));
+          return false;
+        }
+      }
+      // The caller's search structure, over the valid samples only.
+      auto valid = std::make_shared<pcl::Indices> (points_.input_indices.begin (), points_.input_indices.end ());
+      search_->setInputCloud (input_, valid);
+      std::vector<std::uint32_t> to_internal (input_->size (), std::numeric_limits<std::uint32_t>::max ());
+      for (std::size_t s = 0; s < n; ++s)
+        to_internal[points_.input_indices[s]] = static_cast<std::uint32_t> (s);
+      graph_ = pcl::rspd::NeighborGraph (n, k_used_);
+      bool short_answer = false;
+      const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
+  #pragma omp parallel num_threads(pcl::rspd::resolveThreads (params_.num_threads))
+      {
+        pcl::rspd::NeighborGraph::Appender appender (graph_);
+        pcl::Indices nn;
+        std::vector<float> d2;
+        std::vector<std::pair<float, std::uint32_t>> found;
+        std::vector<std::uint32_t> row (static_cast<std::size_t> (k_used_));
+  #pragma omp for schedule(dynamic, 256)
+        for (std::ptrdiff_t s = 0; s < count; ++s)
+        {
+          search_->nearestKSearch ((*input_)[points_.input_indices[s]], k_used_ + 1, nn, d2);
+          found.clear ();
+          for (std::size_t j = 0; j < nn.size () && j < d2.size (); ++j)
+          {
+            if (nn[j] < 0 || static_cast<std::size_t> (nn[j]) >= to_internal.size ())
+              continue;
+            const std::uint32_t t = to_internal[nn[j]];
+            if (t != std::numeric_limits<std::uint32_t>::max () && t != static_cast<std::uint32_t> (s))
+              found.emplace_back (d2[j], t);
+          }
+          std::sort (found.begin (), found.end ()); // by distance, ties by index: deterministic
+          found.erase (std::unique (found.begin (), found.end (),
+                                    [] (const std::pair<float, std::uint32_t>& a, const std::pair<float, std::uint32_t>& b) {
+                                      return a.second == b.second;
+                                    }),
+                       found.end ());
+          if (found.size () < static_cast<std::size_t> (k_used_))
+          {
+  #pragma omp atomic write
+            short_answer = true;
+            // Every row must be set before the graph is read: fill with what there is.
+            for (int j = 0; j < k_used_; ++j)
+              row[j] = found.empty () ? static_cast<std::uint32_t> (s == 0 ? 1 : 0) : found[j % found.size ()].second;
+          }
+          else
+            for (int j = 0; j < k_used_; ++j)
+              row[j] = found[j].second;
+          appender.setRow (static_cast<std::size_t> (s), row.data ());
+        }
+      }
+      if (short_answer)
+      {
+        PCL_ERROR ("[pcl::%s::segment] the search method returned fewer than k = %d neighbours\n", name, k_used_);
         return false;
       }
     }
-    // The caller's search structure, over the valid samples only.
-    auto valid = std::make_shared<pcl::Indices> (points_.input_indices.begin (), points_.input_indices.end ());
-    search_->setInputCloud (input_, valid);
-    std::vector<std::uint32_t> to_internal (input_->size (), std::numeric_limits<std::uint32_t>::max ());
-    for (std::size_t s = 0; s < n; ++s)
-      to_internal[points_.input_indices[s]] = static_cast<std::uint32_t> (s);
-    graph_ = pcl::rspd::NeighborGraph (n, k_used_);
-    bool short_answer = false;
-    const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
-#pragma omp parallel num_threads(pcl::rspd::resolveThreads (params_.num_threads))
+    else if (!pcl::rspd::buildKnnGraph (points_.points, k_used_, params_.num_threads, graph_))
     {
-      pcl::rspd::NeighborGraph::Appender appender (graph_);
-      pcl::Indices nn;
-      std::vector<float> d2;
-      std::vector<std::pair<float, std::uint32_t>> found;
-      std::vector<std::uint32_t> row (static_cast<std::size_t> (k_used_));
-#pragma omp for schedule(dynamic, 256)
-      for (std::ptrdiff_t s = 0; s < count; ++s)
-      {
-        search_->nearestKSearch ((*input_)[points_.input_indices[s]], k_used_ + 1, nn, d2);
-        found.clear ();
-        for (std::size_t j = 0; j < nn.size () && j < d2.size (); ++j)
-        {
-          if (nn[j] < 0 || static_cast<std::size_t> (nn[j]) >= to_internal.size ())
-            continue;
-          const std::uint32_t t = to_internal[nn[j]];
-          if (t != std::numeric_limits<std::uint32_t>::max () && t != static_cast<std::uint32_t> (s))
-            found.emplace_back (d2[j], t);
-        }
-        std::sort (found.begin (), found.end ()); // by distance, ties by index: deterministic
-        found.erase (std::unique (found.begin (), found.end (),
-                                  [] (const std::pair<float, std::uint32_t>& a, const std::pair<float, std::uint32_t>& b) {
-                                    return a.second == b.second;
-                                  }),
-                     found.end ());
-        if (found.size () < static_cast<std::size_t> (k_used_))
-        {
-#pragma omp atomic write
-          short_answer = true;
-          // Every row must be set before the graph is read: fill with what there is.
-          for (int j = 0; j < k_used_; ++j)
-            row[j] = found.empty () ? static_cast<std::uint32_t> (s == 0 ? 1 : 0) : found[j % found.size ()].second;
-        }
-        else
-          for (int j = 0; j < k_used_; ++j)
-            row[j] = found[j].second;
-        appender.setRow (static_cast<std::size_t> (s), row.data ());
-      }
-    }
-    if (short_answer)
-    {
-      PCL_ERROR ("[pcl::%s::segment] the search method returned fewer than k = %d neighbours\n", name, k_used_);
+      PCL_ERROR ("[pcl::%s::segment] could not build the %d-nearest-neighbour graph\n", name, k_used_);
       return false;
     }
-  }
-  else if (!pcl::rspd::buildKnnGraph (points_.points, k_used_, params_.num_threads, graph_))
-  {
-    PCL_ERROR ("[pcl::%s::segment] could not build the %d-nearest-neighbour graph\n", name, k_used_);
+    return true;
+  };
+  if (!buildGraph ())
     return false;
+  stats_.given_normals_blurred = false;
+  given_normal_check_stats_ = pcl::rspd::GivenNormalCheck ();
+  if (use_given_normals_ && given_normal_check_ && normal_scale_ == pcl::rspd::NormalScale::Automatic && k_ == 0)
+  {
+    const int fine_k = pcl::rspd::automaticNumberOfNeighbours (params_.min_patch_size);
+    if (fine_k < k_used_ && pcl::rspd::givenNormalsBlurFaces (points_.points, graph_, fine_k, params_.num_threads,
+                                                              points_.normals, &given_normal_check_stats_))
+    {
+      // The caller's normals blur the faces the automatic k resolves (setGivenNormalCheck): the
+      // detection goes on as without them, on the automatic k's graph and normals estimated here.
+      PCL_DEBUG ("[pcl::%s::segment] the given normals blur the faces %d-neighbourhoods resolve (%zu of %zu "
+                 "resolved probes tilted): estimated again at k = %d\n", name, fine_k,
+                 given_normal_check_stats_.fine_tilted, given_normal_check_stats_.fine_resolved, fine_k);
+      use_given_normals_ = false;
+      stats_.given_normals_replaced = true;
+      stats_.given_normals_blurred = true;
+      k_used_ = fine_k;
+      setNeighbourDependentParameters ();
+      if (!buildGraph ())
+        return false;
+    }
   }
   const auto t1 = std::chrono::steady_clock::now ();
   stats_.graph_seconds = std::chrono::duration<double> (t1 - t0).count ();
   stats_.graph_bytes = graph_.memoryBytes ();
-  given_normal_check_stats_ = pcl::rspd::GivenNormalCheck ();
-  if (normals_ && given_normal_check_ && normal_scale_ == pcl::rspd::NormalScale::Automatic &&
+  if (use_given_normals_ && given_normal_check_ && normal_scale_ == pcl::rspd::NormalScale::Automatic &&
       pcl::rspd::givenNormalsAreNoise (points_.points, graph_, params_.num_threads, points_.normals,
                                        &given_normal_check_stats_))
   {
@@ -1171,7 +1205,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
                "probes unresolved): estimated again at an adaptive scale\n", name, k_used_,
                given_normal_check_stats_.unresolved, given_normal_check_stats_.probes);
   }
-  if (!normals_ && normal_scale_ != pcl::rspd::NormalScale::Fixed)
+  if (!use_given_normals_ && normal_scale_ != pcl::rspd::NormalScale::Fixed)
   {
     pcl::rspd::estimateAdaptiveScaleNormals (points_.points, graph_, params_.num_threads, points_.normals,
                                              &normal_scale_stats_,
@@ -1182,7 +1216,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
                normal_scale_stats_.unresolved_at_k, n, k_used_, normal_scale_stats_.widened (),
                normal_scale_stats_.unresolved);
   }
-  else if (!normals_)
+  else if (!use_given_normals_)
   {
     PCL_DEBUG ("[pcl::%s::segment] no normals given: estimating them by PCA over the %d-neighbourhoods\n",
                name, k_used_);
@@ -1191,7 +1225,7 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   }
   stats_.edge_narrowed_normals = 0;
   params_.narrowed_cell_size = 0;
-  if (!normals_ && edge_aware_normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca &&
+  if (!use_given_normals_ && edge_aware_normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca &&
       normal_scale_stats_.widened () == 0)
   {
     // Departure (edge-aware normals): only where every normal is the k-neighbourhood's, which the
@@ -1210,10 +1244,10 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   // Narrowed normals for what growth left (DetectorParameters::left_normal_narrow): as the
   // edge-aware normals, on the k-neighbourhoods' own PCA normals only, and not where every normal
   // was narrowed already or the trimmed refit was asked for.
-  params_.left_normal_narrow = left_normal_narrowing_ && !normals_ && !params_.left_normal_refit &&
+  params_.left_normal_narrow = left_normal_narrowing_ && !use_given_normals_ && !params_.left_normal_refit &&
                                !edge_aware_normals_ && normal_fit_ == pcl::rspd::NormalFit::Pca &&
                                normal_scale_stats_.widened () == 0;
-  if (!normals_ && normal_fit_ == pcl::rspd::NormalFit::TrimmedPlane)
+  if (!use_given_normals_ && normal_fit_ == pcl::rspd::NormalFit::TrimmedPlane)
   {
     // Departure (robust normals): trimmed planes instead of PCA where the k-scale resolves a surface.
     const auto t2 = std::chrono::steady_clock::now ();
