@@ -157,7 +157,7 @@ constexpr double kBlurResidualRatio = 2.0;
   * smoothly, so they agree with their neighbours and givenNormalsAreNoise keeps them; every cell then
   * seeds the slope, and one plane held the stair (F1 0.02 and 0.01; 0.98 on normals estimated here
   * at the automatic k = 15). Where the given normals do describe the faces the finer neighbourhoods
-  * resolve, only those near edges fit worse (4-26 % of the resolved probes, measured on generated
+  * resolve, only those near edges fit worse (3.5-23 % of the resolved probes, measured on generated
   * scenes and synpeb_test100). Ratios only: free of any length. Deterministic.
   * \param[in] points samples
   * \param[in] graph their k-NN graph (k > fine_k)

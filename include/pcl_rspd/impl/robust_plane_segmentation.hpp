@@ -1166,7 +1166,6 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareNeighbourhoods ()
   };
   if (!buildGraph ())
     return false;
-  stats_.given_normals_blurred = false;
   given_normal_check_stats_ = pcl::rspd::GivenNormalCheck ();
   if (use_given_normals_ && given_normal_check_ && normal_scale_ == pcl::rspd::NormalScale::Automatic && k_ == 0)
   {
