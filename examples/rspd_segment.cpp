@@ -56,8 +56,9 @@ const char* const kHelp =
     "  --given-normals check|keep  the input's normals are estimated again when most\n"
     "                   k-neighbourhoods resolve no surface and the normals agree with their\n"
     "                   neighbours' no better than those neighbourhoods' PCA normals, or (under\n"
-    "                   100,000 points) when most finer neighbourhoods resolve a face they tilt off\n"
-    "                   ('check', the default, with --normal-scale auto); 'keep' uses them as given\n"
+    "                   100,000 points) when most finer neighbourhoods resolve a face they tilt off,\n"
+    "                   or they tilt off it where most 50-neighbourhoods' PCA normals do ('check',\n"
+    "                   the default, with --normal-scale auto); 'keep' uses them as given\n"
     "  --depth-levels keep|dither  where the depths along the camera's axis (the file's\n"
     "                   VIEWPOINT) take a structured-light or stereo camera's levels, 'dither'\n"
     "                   draws each sample's depth again within its level's bin, for the detection\n"
@@ -828,9 +829,11 @@ run (const Options& o)
   const pcl::rspd::GivenNormalCheck& given = seg.getGivenNormalCheckStatistics ();
   if (cloud.normals && given.fine_k > 0)
     log ("the file's normals against %d-neighbourhoods: %zu of %zu probes resolve a surface there, the file's "
-         "normal fits %zu of those worse than %.0f times its plane's residual%s",
-         given.fine_k, given.fine_resolved, given.probes,
-         given.fine_tilted, pcl::rspd::kBlurResidualRatio, stats.given_normals_blurred ? " (most: estimated again)" : "");
+         "normal fits %zu of those worse than %.0f times its plane's residual, %zu of the %zu the %d-neighbourhood's "
+         "normal fits so%s",
+         given.fine_k, given.fine_resolved, given.probes, given.fine_tilted, pcl::rspd::kBlurResidualRatio,
+         given.graph_and_given_tilted, given.graph_tilted, pcl::rspd::kPaperNeighbours,
+         stats.given_normals_blurred ? " (estimated again)" : "");
   const pcl::rspd::NormalScaleStatistics& scales = seg.getNormalScaleStatistics ();
   if (!scales.samples_per_scale.empty ())
   {

@@ -254,7 +254,7 @@ givenNormalsBlurFaces (const std::vector<Eigen::Vector3f>& points, const Neighbo
   GivenNormalCheck local;
   GivenNormalCheck& c = check ? *check : local;
   c.fine_k = fine_k;
-  c.fine_resolved = c.fine_tilted = 0;
+  c.fine_resolved = c.fine_tilted = c.graph_tilted = c.graph_and_given_tilted = 0;
   const std::size_t n = points.size ();
   const int k = graph.k ();
   if (n == 0 || given.size () != n || fine_k < 3 || fine_k >= k)
@@ -263,12 +263,12 @@ givenNormalsBlurFaces (const std::vector<Eigen::Vector3f>& points, const Neighbo
   const std::size_t stride = std::max<std::size_t> (1, n / 4096);
   const std::ptrdiff_t probes = static_cast<std::ptrdiff_t> ((n + stride - 1) / stride);
   c.probes = static_cast<std::size_t> (probes); // as givenNormalsAreNoise's
-  std::size_t resolved = 0, tilted = 0;
+  std::size_t resolved = 0, tilted = 0, graph_tilted = 0, both_tilted = 0;
 #pragma omp parallel num_threads(resolveThreads (num_threads))
   {
     // The graph's rows are stored by index: the fine_k nearest are sorted out of each row.
     std::vector<std::pair<float, std::uint32_t>> row;
-#pragma omp for schedule(static, 64) reduction(+ : resolved, tilted)
+#pragma omp for schedule(static, 64) reduction(+ : resolved, tilted, graph_tilted, both_tilted)
     for (std::ptrdiff_t p = 0; p < probes; ++p)
     {
       const std::uint32_t i = static_cast<std::uint32_t> (static_cast<std::size_t> (p) * stride);
@@ -285,16 +285,31 @@ givenNormalsBlurFaces (const std::vector<Eigen::Vector3f>& points, const Neighbo
       if (!(ratio < bound))
         continue; // no surface at the finer scale either: nothing to compare with
       ++resolved;
-      const Eigen::Vector3d g = given[i].cast<double> ();
       // A floor at the float rounding of the positions (1e-6 of the spread along the face, a
       // tilt of 0.06°): noise-free faces have no residual to compare with.
-      if (g.dot (cov * g) > kBlurResidualRatio * l0 + 1e-6 * l1)
-        ++tilted;
+      const auto tiltedOff = [&] (const Eigen::Vector3d& v) { return v.dot (cov * v) > kBlurResidualRatio * l0 + 1e-6 * l1; };
+      const bool given_off = tiltedOff (given[i].cast<double> ());
+      tilted += given_off ? 1 : 0;
+      // Where the graph's k-neighbourhood reaches past the face (an edge within it), its PCA normal
+      // is tilted off: normals of that scale are told by being tilted there too.
+      Eigen::Vector3f wide = Eigen::Vector3f::UnitZ ();
+      double wide_ratio;
+      fitNormal (neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) { graph.forEachNeighbor (i, add); }),
+                 wide, wide_ratio);
+      if (tiltedOff (wide.cast<double> ()))
+      {
+        ++graph_tilted;
+        both_tilted += given_off ? 1 : 0;
+      }
     }
   }
   c.fine_resolved = resolved;
   c.fine_tilted = tilted;
-  return 2 * resolved > static_cast<std::size_t> (probes) && 2 * tilted > resolved;
+  c.graph_tilted = graph_tilted;
+  c.graph_and_given_tilted = both_tilted;
+  if (!(2 * resolved > static_cast<std::size_t> (probes)))
+    return false;
+  return 2 * tilted > resolved || 2 * both_tilted > graph_tilted;
 }
 
 void

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <numeric>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace
@@ -303,14 +304,14 @@ TEST (NormalEstimation, GivenNormalsThatAreNoiseAtTheKScaleAreTold)
 
 namespace
 {
-/** The generated staircase (30 faces) at 5,000 samples, a few hundred a face, in spatial order;
-  * \a truth: each sample's face normal (its face's least-squares plane). */
+/** A generated scene at \a n samples, in spatial order; \a truth: each sample's face normal (its
+  * face's least-squares plane; +Z for samples of no plane). */
 Points
-sparseStairs (Points& truth)
+sparseScene (const std::string& name, std::size_t n, Points& truth)
 {
   pcl::rspd::SceneOptions o;
-  o.num_points = 5000;
-  const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
+  o.num_points = n;
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene (name, o);
   Points raw;
   for (const auto& q : scene.cloud)
     raw.push_back (q.getVector3fMap ());
@@ -345,6 +346,13 @@ sparseStairs (Points& truth)
   }
   return sorted;
 }
+
+/** The generated staircase (30 faces) at 5,000 samples, a few hundred a face (sparseScene). */
+Points
+sparseStairs (Points& truth)
+{
+  return sparseScene ("staircase", 5000, truth);
+}
 } // namespace
 
 TEST (NormalEstimation, GivenNormalsThatBlurTheFacesAFinerScaleResolvesAreTold)
@@ -372,9 +380,41 @@ TEST (NormalEstimation, GivenNormalsThatBlurTheFacesAFinerScaleResolvesAreTold)
   EXPECT_TRUE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 1, k.normals, &one));
   EXPECT_EQ (one.fine_resolved, check.fine_resolved);
   EXPECT_EQ (one.fine_tilted, check.fine_tilted);
+  EXPECT_EQ (one.graph_tilted, check.graph_tilted);
+  EXPECT_EQ (one.graph_and_given_tilted, check.graph_and_given_tilted);
   // No finer scale than the graph's, or bad input: no check.
   EXPECT_FALSE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 50, 2, k.normals));
   EXPECT_FALSE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 2, Points (3, Eigen::Vector3f::UnitZ ())));
+}
+
+TEST (NormalEstimation, GivenNormalsOfTheGraphsScaleAreToldWhereFewSamplesLieNearAnEdge)
+{
+  // The facade at 8,000 samples: its faces are large, so 50-neighbourhood PCA normals are tilted off
+  // the faces 15-neighbourhoods resolve at a few of the probes only (near edges and in the windows'
+  // recesses), but there at nearly every one where that 50-neighbourhood's normal is: they are of
+  // that scale. Normals of the finer scale and the faces' own are kept.
+  Points truth;
+  const Points p = sparseScene ("facade", 8000, truth);
+  const KScale k = kScale (p);
+  pcl::rspd::GivenNormalCheck check;
+  EXPECT_TRUE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 2, k.normals, &check));
+  EXPECT_GT (2 * check.fine_resolved, check.probes);
+  EXPECT_LT (4 * check.fine_tilted, check.fine_resolved); // the first test alone keeps them
+  EXPECT_GT (check.graph_tilted, 0u);
+  EXPECT_GT (2 * check.graph_and_given_tilted, check.graph_tilted);
+  std::printf ("    k = 50 normals: %zu of %zu resolved probes tilted, %zu of the %zu where the 50-neighbourhood's are\n",
+               check.fine_tilted, check.fine_resolved, check.graph_and_given_tilted, check.graph_tilted);
+  pcl::rspd::GivenNormalCheck exact;
+  EXPECT_FALSE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 2, truth, &exact));
+  EXPECT_EQ (exact.graph_tilted, check.graph_tilted);
+  EXPECT_LT (2 * exact.graph_and_given_tilted, exact.graph_tilted);
+  pcl::rspd::NeighborGraph fine_graph;
+  ASSERT_TRUE (pcl::rspd::buildKnnGraph (p, 15, 2, fine_graph));
+  Points fine;
+  pcl::rspd::estimateNormals (p, fine_graph, 2, fine);
+  pcl::rspd::GivenNormalCheck finer;
+  EXPECT_FALSE (pcl::rspd::givenNormalsBlurFaces (p, k.graph, 15, 2, fine, &finer));
+  EXPECT_EQ (finer.graph_and_given_tilted, 0u);
 }
 
 TEST (NormalEstimation, GivenNormalsOfAResolvedSurfaceAreKept)

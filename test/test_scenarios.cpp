@@ -145,6 +145,20 @@ detectOnPclNormals (const pcl::rspd::Scene& scene, const pcl::PointCloud<pcl::No
                  });
 }
 
+/** detectOnPclNormals with the caller's normals kept (setGivenNormalCheck(false)): below 100,000
+  * samples the check estimates PCL's k = 50 normals again (they are of the graph's scale, coarser
+  * than the automatic k), and a test of a rule for normals given at that scale would measure none. */
+Detection
+detectOnKeptPclNormals (const pcl::rspd::Scene& scene, const pcl::PointCloud<pcl::Normal>::Ptr& normals,
+                        const Configure& configure = {})
+{
+  return detectOnPclNormals (scene, normals, [&] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+    s.setGivenNormalCheck (false);
+    if (configure)
+      configure (s);
+  });
+}
+
 /** The unit plane at σ 1 cm, 100,000 points, among \a outliers (a share of the points) in its box
   * grown by 5 % of its diagonal: a slab of outliers 14 cm thick. */
 pcl::rspd::SceneOptions
@@ -983,8 +997,8 @@ TEST (Scenario, CabinetTopOnPclNormalsIsSeededByARimCellOnTrimmedNormals)
   o.seed = 3;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", o);
   const auto normals = pclNormals (scene.cloud);
-  const Detection with = detectOnPclNormals (scene, normals);
-  const Detection without = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection with = detectOnKeptPclNormals (scene, normals);
+  const Detection without = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftRimRetest (false);
   });
   std::printf ("    retest bounded at k + 1: %d of 12, F1 %.4f; down to 16: %d, F1 %.4f\n", without.score.found,
@@ -1179,8 +1193,8 @@ TEST (Scenario, ARisersPlaneOnBlurredNormalsKeepsItsEstimateWithinT2)
   options.seed = 9;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", options);
   const auto normals = pclNormals (scene.cloud);
-  const Detection bounded = detectOnPclNormals (scene, normals);
-  const Detection paper = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection bounded = detectOnKeptPclNormals (scene, normals);
+  const Detection paper = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setBoundedReestimation (false);
   });
   EXPECT_LE (paper.score.found, 12);
@@ -1201,8 +1215,8 @@ TEST (Scenario, AThinPipeFoldedOntoOnePlaneIsATube)
   options.seed = 5;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("industrial", options);
   const auto normals = pclNormals (scene.cloud);
-  const Detection with = detectOnPclNormals (scene, normals);
-  const Detection without = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection with = detectOnKeptPclNormals (scene, normals);
+  const Detection without = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     EXPECT_TRUE (s.getCurvedTubeCheck ());
     s.setCurvedTubeCheck (false);
   });
@@ -1228,8 +1242,8 @@ TEST (Scenario, PartsOfAPillarFacetCutAtAFoldStillBend)
   options.seed = 43;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", options);
   const auto normals = pclNormals (scene.cloud);
-  const Detection with = detectOnPclNormals (scene, normals);
-  const Detection without = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection with = detectOnKeptPclNormals (scene, normals);
+  const Detection without = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     EXPECT_TRUE (s.getCurvedSplitParts ());
     s.setCurvedSplitParts (false);
   });
@@ -1737,14 +1751,14 @@ TEST (Scenario, NoPlaneEndsWithFewerThanEpsilonSamples)
   o.num_points = 15000;
   o.seed = 15;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
-  const Detection refit = detectOnPclNormals (scene, pclNormals (scene.cloud));
+  const Detection refit = detectOnKeptPclNormals (scene, pclNormals (scene.cloud));
   std::map<std::uint32_t, std::size_t> refit_size;
   for (const auto l : refit.labels)
     if (l != 0)
       ++refit_size[l];
   for (const auto& s : refit_size)
     EXPECT_GE (s.second, 15u) << "plane " << s.first;
-  const Detection d = detectOnPclNormals (scene, pclNormals (scene.cloud), [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection d = detectOnKeptPclNormals (scene, pclNormals (scene.cloud), [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setFinalRefit (false);
   });
   std::map<std::uint32_t, std::size_t> size;
@@ -1838,17 +1852,17 @@ TEST (Scenario, RoughBoxSideOnPclNormalsNeedsTheStricterJudgeOfGrownPlanes)
   o.num_points = 50000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("boxes", o);
   const auto normals = pclNormals (scene.cloud);
-  const Detection strict = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection strict = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setGrownPlaneNormalTurn (0.0);
   });
-  const Detection loose = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection loose = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     EXPECT_DOUBLE_EQ (s.getGrownPlaneBendConfidence (), 0.975);
     s.setGrownPlaneBendConfidence (1.0); // refused: not below 1
     s.setGrownPlaneBendConfidence (0.95);
     EXPECT_DOUBLE_EQ (s.getGrownPlaneBendConfidence (), 0.95);
     s.setGrownPlaneNormalTurn (0.0);
   });
-  const Detection turn = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection turn = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setGrownPlaneBendConfidence (0.95);
   });
   EXPECT_EQ (strict.score.found, 32);
@@ -1872,10 +1886,10 @@ TEST (Scenario, FlatBoxSideWhoseNormalsDoNotTurnIsNoBentPlane)
   o.num_points = 40000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("boxes", o);
   const auto normals = pclNormals (scene.cloud);
-  const Detection kept = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection kept = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setShiftedGrid (false);
   });
-  const Detection judged = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection judged = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setShiftedGrid (false);
     EXPECT_DOUBLE_EQ (s.getGrownPlaneNormalTurn (), 0.25);
     s.setGrownPlaneNormalTurn (-1.0); // refused
@@ -1901,11 +1915,11 @@ TEST (Scenario, SparseStaircaseOnPclNormalsNeedsTheSmallPassThickCells)
   // riser too.
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("staircase", o);
   const auto normals = pclNormals (scene.cloud);
-  const Detection joined = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection joined = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftNormalRefitOnGivenNormals (false);
     s.setShiftedGrid (false);
   });
-  const Detection cells = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection cells = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftNormalRefitOnGivenNormals (false);
     s.setShiftedGrid (false);
     s.setSmallPassThickCellJoin (false);
@@ -1926,8 +1940,8 @@ TEST (Scenario, SmallRoomPlanesOnPclNormalsGrowOnTheTrimmedNormalsTheyWereFoundO
   o.num_points = 30000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", o);
   const auto normals = pclNormals (scene.cloud);
-  const Detection trimmed = detectOnPclNormals (scene, normals);
-  const Detection pca = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection trimmed = detectOnKeptPclNormals (scene, normals);
+  const Detection pca = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     EXPECT_TRUE (s.getTrimmedSeedGrowth ());
     s.setTrimmedSeedGrowth (false);
   });
@@ -1953,20 +1967,20 @@ TEST (Scenario, SparseBoxesOnPclNormalsNeedReestimationWithinT2AndTheNoisyBentSp
   o.num_points = 10000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("boxes", o);
   const auto normals = pclNormals (scene.cloud);
-  const Detection refit = detectOnPclNormals (scene, normals);
+  const Detection refit = detectOnKeptPclNormals (scene, normals);
   EXPECT_GE (refit.score.found, 18);
   EXPECT_EQ (refit.score.false_planes, 0);
   EXPECT_GT (refit.stats.small_seeds_trimmed, 0u);
-  const Detection both = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection both = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftNormalRefitOnGivenNormals (false);
     EXPECT_FALSE (s.getNoisyPlaneBentSplit ()); // off by default since the eighteenth session
     s.setNoisyPlaneBentSplit (true);
     EXPECT_TRUE (s.getNoisyPlaneBentSplit ());
   });
-  const Detection dropped = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection dropped = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftNormalRefitOnGivenNormals (false);
   });
-  const Detection paper = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection paper = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftNormalRefitOnGivenNormals (false);
     EXPECT_TRUE (s.getBoundedReestimation ());
     s.setBoundedReestimation (false);
@@ -2034,6 +2048,28 @@ TEST (Scenario, SparseStaircaseOnPclNormalsThatBlurItsStepsGetsNormalsEstimatedA
   EXPECT_LT (kept.score.f1, 0.5);
 }
 
+TEST (Scenario, SparseFacadeOnPclNormalsOfTheGraphsScaleGetsNormalsEstimatedAgain)
+{
+  // 8,000 samples: on PCL's k = 50 normals, kept, one plane held two windows' panes (87 samples
+  // each, in the same plane) and another pane only in part (15 of 16 found, F1 0.979, measured). Its faces are large, so those normals are tilted off the faces the
+  // automatic k (15) resolves at 12 % of the probes only, but there wherever the 50-neighbourhood's
+  // PCA normals are: the detection runs as without them (16 of 16, 0.992, and one false
+  // plane, as on its own normals).
+  pcl::rspd::SceneOptions o;
+  o.num_points = 8000;
+  const pcl::rspd::Scene scene = pcl::rspd::makeScene ("facade", o);
+  const auto normals = pclNormals (scene.cloud);
+  const Detection checked = detectOnPclNormals (scene, normals);
+  const Detection kept = detectOnKeptPclNormals (scene, normals);
+  EXPECT_TRUE (checked.stats.given_normals_blurred);
+  EXPECT_EQ (checked.score.found, 16);
+  EXPECT_LE (checked.score.false_planes, 1);
+  EXPECT_LE (kept.score.found, 15);
+  EXPECT_GT (checked.score.f1, kept.score.f1 + 0.005);
+  std::printf ("    F1 %.4f (%d of 16) on normals estimated again, %.4f (%d) on PCL's kept\n", checked.score.f1,
+               checked.score.found, kept.score.f1, kept.score.found);
+}
+
 TEST (Scenario, FacadeOnPclNormalsGetsNoSlabOfOutliersFromTrimmedNormals)
 {
   // 10,000 samples, 15 % outliers, PCL's k = 50 normals: trimmed normals of scattered outliers
@@ -2042,7 +2078,7 @@ TEST (Scenario, FacadeOnPclNormalsGetsNoSlabOfOutliersFromTrimmedNormals)
   pcl::rspd::SceneOptions o;
   o.num_points = 10000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("facade", o);
-  const Detection d = detectOnPclNormals (scene, pclNormals (scene.cloud));
+  const Detection d = detectOnKeptPclNormals (scene, pclNormals (scene.cloud));
   EXPECT_EQ (d.score.found, 16);
   // No plane made mostly of outliers. (A strip across a window's 20 cm step, wall and window
   // samples, is scored a fragment or a false plane depending on which side holds more of its
@@ -2127,10 +2163,10 @@ TEST (Scenario, SparseRoomsTableTopNeedsTheSmallSeedMndFloor)
   o.num_points = 30000;
   const pcl::rspd::Scene scene = pcl::rspd::makeScene ("room", o);
   const auto normals = pclNormals (scene.cloud);
-  const Detection floored = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection floored = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftNormalRefitOnGivenNormals (false);
   });
-  const Detection own = detectOnPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
+  const Detection own = detectOnKeptPclNormals (scene, normals, [] (pcl::RobustPlaneSegmentation<pcl::PointXYZ>& s) {
     s.setLeftNormalRefitOnGivenNormals (false);
     EXPECT_TRUE (s.getSmallSeedMndFloor ());
     s.setSmallSeedMndFloor (false);

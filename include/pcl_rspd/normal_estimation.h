@@ -139,6 +139,8 @@ struct GivenNormalCheck
   int fine_k = 0;                  ///< givenNormalsBlurFaces: the finer neighbourhood's size (0: not measured)
   std::size_t fine_resolved = 0;   ///< of the probes, those whose fine_k nearest resolve a surface
   std::size_t fine_tilted = 0;     ///< of those, the ones the given normal fits worse than kBlurResidualRatio allows
+  std::size_t graph_tilted = 0;    ///< of the resolved probes, those the graph's k-neighbourhood PCA normal fits worse so
+  std::size_t graph_and_given_tilted = 0; ///< of those, the ones the given normal fits worse too
 };
 
 /** \brief givenNormalsBlurFaces: a given normal is tilted off its sample's surface when its plane
@@ -148,9 +150,20 @@ constexpr double kBlurResidualRatio = 2.0;
 
 /** \brief Whether normals given with a cloud blur the faces the samples resolve at a finer scale:
   * of the probed samples (every n/4096-th) most have their \a fine_k nearest neighbours resolving a
-  * surface (the resolution test of estimateAdaptiveScaleNormals at that size), and at most of those
-  * the given normal fits that neighbourhood worse than kBlurResidualRatio times its own PCA plane
-  * (variance along the given normal about the neighbourhood's mean, against its least eigenvalue).
+  * surface (the resolution test of estimateAdaptiveScaleNormals at that size), and either at most of
+  * those the given normal fits that neighbourhood worse than kBlurResidualRatio times its own PCA
+  * plane (variance along the given normal about the neighbourhood's mean, against its least
+  * eigenvalue), or it does so at most of those where the PCA normal of the graph's whole
+  * k-neighbourhood does: the given normals blur the faces as normals of the graph's scale do.
+  *
+  * The second test asks about the scale of the normals, not about how much of the scene lies near
+  * an edge: PCL's k = 50 normals of a 8,000-sample facade are tilted at 12 % of the resolved probes
+  * only (its faces are large), but at 95 % of those where the 50-neighbourhood is, and on them one
+  * plane held two windows' panes (15 of 16 planes found; 16 at the automatic k). Normals of the finer
+  * scale are tilted at none of them, the true planes' normals at 0-19 % (measured on generated
+  * scenes at 8,000-50,000 samples); a noisy cube's true normals, tilted at 65 % of the few such
+  * probes (5 % of the resolved, made by its noise of 1 % of its edge), are the exception measured:
+  * at 20,000 samples they were estimated again, F1 0.9856 -> 0.9847.
   *
   * PCL's k = 50 normals on a sparse staircase (5,000-8,000 samples on 30-38 faces, each a few
   * hundred) come from balls that span two or three steps: they turn towards the stair's slope,

@@ -450,10 +450,11 @@ public:
     * estimated here instead, at the finest scale that resolves a surface (as without normals). PCL's
     * k = 50 normals on the 1M-point cube with noise 1 % of its edge gave no plane at all (0 of 6);
     * estimated again, 6 of 6 (README). Below 100,000 samples also when they blur the faces the
-    * automatic k resolves (pcl::rspd::givenNormalsBlurFaces): the detection then runs as without
-    * them, at that k (a 5,000-sample staircase on PCL's k = 50 normals: 1 of 30 planes as given, 30
-    * so). getStatistics().given_normals_replaced (and given_normals_blurred) says whether it
-    * happened. */
+    * automatic k resolves, at most of its neighbourhoods or where most 50-neighbourhoods' PCA
+    * normals do (pcl::rspd::givenNormalsBlurFaces: normals of that coarser scale): the detection
+    * then runs as without them, at that k (a 5,000-sample staircase on PCL's k = 50 normals: 1 of
+    * 30 planes as given, 30 so; an 8,000-sample facade: 15 of 16, 16).
+    * getStatistics().given_normals_replaced (and given_normals_blurred) says whether it happened. */
   void
   setGivenNormalCheck (bool enable);
   /** \brief Whether noisy given normals are estimated again. */
