@@ -198,6 +198,18 @@ TEST (BadInput, NaNAndZeroLengthNormalsAreLeftOut)
   EXPECT_EQ (o.labels[20], 0u);
 }
 
+TEST (BadInput, EveryNormalZeroLengthOrNaNFails)
+{
+  // No point is left once those are left out: a clear error, empty outputs.
+  auto cloud = boxCorner (500);
+  auto zero = std::make_shared<Normals> ();
+  zero->resize (cloud->size (), pcl::Normal (0, 0, 0));
+  EXPECT_FALSE (runChecked (cloud, zero).ok);
+  auto nan = std::make_shared<Normals> ();
+  nan->resize (cloud->size (), pcl::Normal (NAN, NAN, NAN));
+  EXPECT_FALSE (runChecked (cloud, nan).ok);
+}
+
 TEST (BadInput, NormalsOfAnotherSize)
 {
   auto cloud = boxCorner (500);

@@ -985,7 +985,8 @@ RobustPlaneSegmentation<PointT, NormalT>::prepareSamples ()
   const std::size_t n = points_.input_indices.size ();
   if (n == 0)
   {
-    PCL_ERROR ("[pcl::%s::segment] no valid point: every point is non-finite\n", name);
+    PCL_ERROR ("[pcl::%s::segment] no valid point: every point is non-finite%s\n", name,
+               bad_normals > 0 ? " or has a NaN or zero-length normal" : "");
     return false;
   }
   params_.min_patch_size = min_patch_size_ > 0
