@@ -53,6 +53,13 @@ neighbourhoodCovariance (const Eigen::Vector3f& self, int k, const std::vector<E
   return cov - mean * mean.transpose ();
 }
 
+/** neighbourhoodCovariance of sample \a i and its graph row: the PCA neighbourhood at the graph's k. */
+Eigen::Matrix3d
+graphRowCovariance (const std::vector<Eigen::Vector3f>& points, const NeighborGraph& graph, std::size_t i)
+{
+  return neighbourhoodCovariance (points[i], graph.k (), points, [&] (auto&& add) { graph.forEachNeighbor (i, add); });
+}
+
 /** Unit eigenvector of the smallest eigenvalue (normal untouched if the samples coincide), and
   * λ0/λ1, smallest over middle eigenvalue: 0 for a flat neighbourhood, near 1 for one that fills a
   * ball. A neighbourhood without two independent directions (coincident or collinear samples) has no
@@ -125,15 +132,11 @@ estimateNormals (const std::vector<Eigen::Vector3f>& points, const NeighborGraph
 {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (points.size ());
   normals.assign (points.size (), Eigen::Vector3f::UnitZ ());
-  const int k = graph.k ();
 #pragma omp parallel for schedule(static, 4096) num_threads(resolveThreads (num_threads))
   for (std::ptrdiff_t i = 0; i < n; ++i)
   {
-    const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) {
-      graph.forEachNeighbor (static_cast<std::size_t> (i), add);
-    });
     double ratio;
-    fitNormal (cov, normals[i], ratio); // a degenerate neighbourhood keeps +Z
+    fitNormal (graphRowCovariance (points, graph, static_cast<std::size_t> (i)), normals[i], ratio); // degenerate: +Z
   }
 }
 
@@ -206,10 +209,7 @@ givenNormalsAreNoise (const std::vector<Eigen::Vector3f>& points, const Neighbor
   c.probes = probes.size ();
   const auto pcaNormal = [&] (std::uint32_t i, double& ratio) {
     Eigen::Vector3f normal = Eigen::Vector3f::UnitZ ();
-    const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) {
-      graph.forEachNeighbor (i, add);
-    });
-    fitNormal (cov, normal, ratio);
+    fitNormal (graphRowCovariance (points, graph, i), normal, ratio);
     return normal;
   };
   std::size_t unresolved = 0;
@@ -294,8 +294,7 @@ givenNormalsBlurFaces (const std::vector<Eigen::Vector3f>& points, const Neighbo
       // is tilted off: normals of that scale are told by being tilted there too.
       Eigen::Vector3f wide = Eigen::Vector3f::UnitZ ();
       double wide_ratio;
-      fitNormal (neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) { graph.forEachNeighbor (i, add); }),
-                 wide, wide_ratio);
+      fitNormal (graphRowCovariance (points, graph, i), wide, wide_ratio);
       if (tiltedOff (wide.cast<double> ()))
       {
         ++graph_tilted;
@@ -332,11 +331,8 @@ estimateAdaptiveScaleNormals (const std::vector<Eigen::Vector3f>& points, const 
 #pragma omp parallel for schedule(static, 4096) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t> (n); ++i)
   {
-    const Eigen::Matrix3d cov = neighbourhoodCovariance (points[i], k, points, [&] (auto&& add) {
-      graph.forEachNeighbor (static_cast<std::size_t> (i), add);
-    });
     double ratio;
-    fitNormal (cov, normals[i], ratio);
+    fitNormal (graphRowCovariance (points, graph, static_cast<std::size_t> (i)), normals[i], ratio);
     resolved[i] = ratio < bound ? 1 : 0;
   }
   // Where most samples are unresolved at the k-scale, a test at the 5 % level still passes about one
