@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-bend-band on|off] [--position-bend-slabs on|off] [--position-join on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-parts on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-bend-band on|off] [--position-bend-slabs on|off] [--position-join on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-parts on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--bent-normals on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -186,6 +186,10 @@ const char* const kHelp =
     "  --bent-side-mnd on|off  a side of a bent plane passes T2 if its MND is below that of\n"
     "                   the plane it was cut from, where that is past T2's 60 degrees (default on;\n"
     "                   off = T2 at 60 degrees)\n"
+    "  --bent-normals on|off  a plane whose sides meet at more than 15 degrees is split there\n"
+    "                   also where its noise hides the bend from the positions, if the normals\n"
+    "                   turn at the edge in one step (not steadily, as on a curved surface)\n"
+    "                   (default on; off = the positions alone)\n"
     "  --normal-fit pca|trimmed   estimated normals by PCA over the k-neighbourhood (default, the\n"
     "                             paper) or from its reweighted least-trimmed-squares plane (more\n"
     "                             accurate at edges, ~20x the normal stage's time)\n"
@@ -320,6 +324,7 @@ struct Options
   bool step_split = true;
   bool across_steps = true;
   bool bent_side_mnd = true;
+  bool bent_normals = true;
   bool curved_check = true;
   bool late_curved = true;
   bool curved_turn = true;
@@ -517,6 +522,8 @@ parseArguments (int argc, char** argv)
       o.across_steps = option.choice ("on", "off");
     else if (arg == "--bent-side-mnd")
       o.bent_side_mnd = option.choice ("on", "off");
+    else if (arg == "--bent-normals")
+      o.bent_normals = option.choice ("on", "off");
     else if (arg == "--normal-fit")
       o.trimmed_normals = !option.choice ("pca", "trimmed");
     else if (arg == "--edge-normals")
@@ -761,6 +768,7 @@ run (const Options& o)
   seg.setStepSplit (o.step_split);
   seg.setAcrossStepCheck (o.across_steps);
   seg.setBentSideParentMnd (o.bent_side_mnd);
+  seg.setBentNormalEdges (o.bent_normals);
   seg.setCurvedPlaneCheck (o.curved_check);
   seg.setLateCurvedCheck (o.late_curved);
   seg.setCurvedNormalTurn (o.curved_turn);

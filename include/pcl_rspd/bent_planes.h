@@ -48,6 +48,15 @@ fitHinge (const PointSet& points, const std::vector<std::uint32_t>& samples, Hin
 bool
 isBend (const HingeFit& fit, const DetectorParameters& params);
 
+/** \brief Whether the normals confirm \a fit as an edge where the positions alone do not (see
+  * DetectorParameters::bent_normal_edges): its sides' planes meet at more than 90° minus T1's angle,
+  * the σ ratio is at most √((1 + r²) / 2) for r = bent_sigma_ratio, the sides' mean normals turn by
+  * more than 90° minus T1's angle, and across the two sides they turn in one step at least as
+  * clearly as steadily (normalTurnRatio >= 1: an edge, not a curved surface). Always false when the
+  * option is off. */
+bool
+isEdgeTheNormalsConfirm (const PointSet& points, const HingeFit& fit, const DetectorParameters& params);
+
 /** \brief Whether two planes meeting at an edge explain \a samples (fitHinge, then isBend), and, with
   * DetectorParameters::hinge_normal_turn, whether the two sides' mean normals turn by more than 90°
   * minus T1's angle too. A group of thick cells along a noisy cube's edge (half on either face, each
@@ -65,7 +74,8 @@ bentAtAnEdge (const PointSet& points, const std::vector<std::uint32_t>& samples,
   * split at fitHinge's cut when
   *  - the two sides' planes lower the robust σ of the distances to at most
   *    DetectorParameters::bent_sigma_ratio (0.8) of the one plane's: a bend, not noise (on flat
-  *    noisy planes of 100 to 30,000 samples the search never got below 0.85);
+  *    noisy planes of 100 to 30,000 samples the search never got below 0.85), or the normals
+  *    confirm an edge the positions show less clearly (isEdgeTheNormalsConfirm);
   *  - they meet at more than 90° minus T1's angle (15° by default): T1 accepts a cell whose samples
   *    spread over that slope as one plane, so a gentler bend is what the paper calls a plane (a
   *    scanned wall that bows, or steps by its noise);
@@ -113,8 +123,8 @@ splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, 
   * touching, which no merge joins any more. Two planes are joined when at least one of them is a
   * part the split produced, a graph edge joins their members (M1), their normals meet at no more
   * than 90° minus T1's angle (15°: what T1 accepts as one plane), and their union is neither bent
-  * nor stepped (fitHinge lowers its robust σ by less than bent_sigma_ratio: the test by which the
-  * split joins its own leaves). Pairs are taken largest first; a joined plane is estimated again.
+  * nor stepped (fitHinge lowers its robust σ by less than bent_sigma_ratio and the normals confirm
+  * no edge, isEdgeTheNormalsConfirm: the test by which the split joins its own leaves). Pairs are taken largest first; a joined plane is estimated again.
   * The result does not depend on the thread count.
   * \param[in] points samples
   * \param[in] graph their k-NN graph

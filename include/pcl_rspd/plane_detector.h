@@ -636,6 +636,17 @@ struct DetectorParameters
   /** \brief Bent planes: the largest ratio of the two planes' robust σ to the one plane's that counts as
     * a bend (0.8; fitHinge's search on flat noisy planes stays above 0.85). */
   double bent_sigma_ratio = 0.8;
+  /** \brief Departure (part of bent_plane_split, see isEdgeTheNormalsConfirm): a hinge whose positions
+    * alone are no bend (σ above bent_sigma_ratio of the one plane's) still is where the normals
+    * confirm an edge: the two sides' mean normals turn by more than 90° minus T1's angle, as their
+    * planes do, they turn in one step rather than steadily (normalTurnRatio at least 1, where a
+    * curved surface gives less), and the positions explain at least half the share of the variance
+    * the positions alone must (σ at most √((1 + r²) / 2) of the one plane's for r =
+    * bent_sigma_ratio: 0.906). On faces whose noise is a large part of their width the positions
+    * cannot reach 0.8 (synpeb_pc01: two faces 40° apart at σ 1.4-2 cm, 0.33-0.38 m wide, held by
+    * one plane, σ ratio 0.855 with the true faces as sides), while their normals turn by 20-33° at
+    * the edge. false = the positions alone decide. */
+  bool bent_normal_edges = true;
   /** \brief Departure (part of bentAtAnEdge, which judges seeds and groups of cells): a set the
     * positions call bent at an edge (isBend) is so only if the mean normals of its two sides also
     * turn by more than 90° minus T1's angle (15°), the bend isBend asks of the positions. A cut

@@ -658,6 +658,17 @@ public:
   bool
   getBentSideParentMnd () const { return params_.bent_side_parent_mnd; }
 
+  /** \brief Edges the normals confirm (default true; false = the positions alone tell a bent plane):
+    * a plane whose two sides meet at more than 15° is split there where its noise keeps two planes
+    * from lowering the positions' σ to 0.8 of one plane's, if they lower it to 0.906, the sides'
+    * mean normals turn by more than 15° too, and in one step rather than steadily (no curved
+    * surface). See pcl::rspd::DetectorParameters::bent_normal_edges. */
+  void
+  setBentNormalEdges (bool enable);
+  /** \brief Whether edges the normals confirm split bent planes. */
+  bool
+  getBentNormalEdges () const { return params_.bent_normal_edges; }
+
   /** \brief Connected parts (default true; false = the paper): a plane whose members that pass its
     * inlier test at its last estimate form two or more parts of at least ε samples with no graph edge
     * between them is split into them. See pcl::rspd::splitDisconnectedPlanes and

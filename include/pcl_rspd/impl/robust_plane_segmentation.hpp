@@ -460,6 +460,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setBentSideParentMnd (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setBentNormalEdges (bool enable)
+{
+  params_.bent_normal_edges = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setConnectedParts (bool enable)
 {
   params_.connected_parts = enable;
