@@ -124,8 +124,9 @@ splitBentNoisyPlanes (const PointSet& points, const DetectorParameters& params, 
   * part the split produced, a graph edge joins their members (M1), their normals meet at no more
   * than 90° minus T1's angle (15°: what T1 accepts as one plane), and their union is neither bent
   * nor stepped (fitHinge lowers its robust σ by less than bent_sigma_ratio and the normals confirm
-  * no edge, isEdgeTheNormalsConfirm: the test by which the split joins its own leaves). Pairs are taken largest first; a joined plane is estimated again.
-  * The result does not depend on the thread count.
+  * no edge, isEdgeTheNormalsConfirm: the test by which the split joins its own leaves). Pairs are
+  * taken largest first; a joined plane is estimated again. The result does not depend on the thread
+  * count.
   * \param[in] points samples
   * \param[in] graph their k-NN graph
   * \param[in] params constants (T1's angle, bent_sigma_ratio, ε)
