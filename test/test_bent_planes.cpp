@@ -21,25 +21,34 @@ namespace
 {
 constexpr float kDegree = static_cast<float> (M_PI / 180.0);
 
-/** A roof: two 0.4 x 0.6 m faces meeting along the y axis, each tilted by half of \a dihedral from
-  * z = 0, Gaussian noise \a noise along each face's normal; faces[0] at x < 0, faces[1] at x > 0. */
+/** A roof: two faces meeting along the y axis, each tilted by half of the dihedral angle from
+  * z = 0, Gaussian noise along each face's normal; faces[0] at x < 0, faces[1] at x > 0. */
 struct Roof
 {
   PointSet set;
   std::vector<std::uint32_t> faces[2];
 };
 
+/** A roof of two faces \a width across and \a length along their edge (the y axis), meeting at
+  * \a dihedral, Gaussian noise \a noise along each face's normal, exact normals. */
 Roof
-makeRoof (float dihedral, float noise, int nu = 40, int nv = 60, std::uint32_t seed = 1)
+makeRoofSized (float dihedral, float noise, float width, float length, int across, int along, std::uint32_t seed = 1)
 {
   Roof r;
   const float h = 0.5f * dihedral;
-  const Eigen::Vector3f right (0.4f * std::cos (h), 0.0f, -0.4f * std::sin (h));
-  const Eigen::Vector3f left (-0.4f * std::cos (h), 0.0f, -0.4f * std::sin (h));
-  const Eigen::Vector3f along (0.0f, 0.6f, 0.0f);
-  r.faces[0] = rspd_test::addRectangle (r.set, {0, 0, 0}, along, left, nv, nu, noise, seed);
-  r.faces[1] = rspd_test::addRectangle (r.set, {0, 0, 0}, right, along, nu, nv, noise, seed + 1);
+  const Eigen::Vector3f right (width * std::cos (h), 0.0f, -width * std::sin (h));
+  const Eigen::Vector3f left (-width * std::cos (h), 0.0f, -width * std::sin (h));
+  const Eigen::Vector3f on (0.0f, length, 0.0f);
+  r.faces[0] = rspd_test::addRectangle (r.set, {0, 0, 0}, on, left, along, across, noise, seed);
+  r.faces[1] = rspd_test::addRectangle (r.set, {0, 0, 0}, right, on, across, along, noise, seed + 1);
   return r;
+}
+
+/** The roof of 0.4 x 0.6 m faces, nu x nv samples a face. */
+Roof
+makeRoof (float dihedral, float noise, int nu = 40, int nv = 60, std::uint32_t seed = 1)
+{
+  return makeRoofSized (dihedral, noise, 0.4f, 0.6f, nu, nv, seed);
 }
 
 std::vector<PlanarPatch>
@@ -454,21 +463,6 @@ TEST (BentPlanes, SidesAsNoisyAsTheirPlaneArePlanesPastT2)
 
 namespace
 {
-/** A roof of two faces \a width across and \a length along their edge (the y axis), meeting at
-  * \a dihedral, Gaussian noise \a noise along each face's normal, exact normals. */
-Roof
-makeLongRoof (float dihedral, float noise, float width, float length, int across, int along, std::uint32_t seed = 1)
-{
-  Roof r;
-  const float h = 0.5f * dihedral;
-  const Eigen::Vector3f right (width * std::cos (h), 0.0f, -width * std::sin (h));
-  const Eigen::Vector3f left (-width * std::cos (h), 0.0f, -width * std::sin (h));
-  const Eigen::Vector3f on (0.0f, length, 0.0f);
-  r.faces[0] = rspd_test::addRectangle (r.set, {0, 0, 0}, on, left, along, across, noise, seed);
-  r.faces[1] = rspd_test::addRectangle (r.set, {0, 0, 0}, right, on, across, along, noise, seed + 1);
-  return r;
-}
-
 /** An arc of a cylinder of \a radius about the y axis, \a span wide, \a length long, Gaussian noise
   * \a noise along the radius, exact (radial) normals. */
 PointSet
@@ -503,7 +497,7 @@ TEST (BentPlanes, EdgeTheNormalsConfirmSplitsARoofTooNoisyForThePositions)
   // Two faces 40° apart whose noise is a large part of their width (as synpeb_pc01's boxes): two
   // planes lower the positions' σ by less than the bend test asks (0.8), and by more than half
   // its share of the variance (0.906); the normals turn by 40°, in one step.
-  const Roof r = makeLongRoof (40.0f * kDegree, 0.03f, 0.2f, 1.0f, 30, 100);
+  const Roof r = makeRoofSized (40.0f * kDegree, 0.03f, 0.2f, 1.0f, 30, 100);
   HingeFit fit;
   ASSERT_TRUE (fitHinge (r.set, allOf (r.set), fit));
   const double ratio = fit.split_sigma / fit.single_sigma;
@@ -534,7 +528,7 @@ TEST (BentPlanes, EdgeTheNormalsConfirmSplitsARoofTooNoisyForThePositions)
 TEST (BentPlanes, NormalsThatTurnLessThanT1sSlopeConfirmNoEdge)
 {
   // The same positions, the normals turned by 10° across the edge (under T1's 15°): no edge.
-  Roof r = makeLongRoof (40.0f * kDegree, 0.03f, 0.2f, 1.0f, 30, 100);
+  Roof r = makeRoofSized (40.0f * kDegree, 0.03f, 0.2f, 1.0f, 30, 100);
   for (std::uint32_t i = 0; i < r.set.size (); ++i)
   {
     const float t = (r.set.points[i].x () > 0 ? 5.0f : -5.0f) * kDegree;
