@@ -539,6 +539,10 @@ TEST (BentPlanes, NormalsThatTurnLessThanT1sSlopeConfirmNoEdge)
   EXPECT_FALSE (isEdgeTheNormalsConfirm (r.set, fit, rspd_test::unitParameters ()));
   std::vector<PlanarPatch> patches = onePlane (r.set.size ());
   EXPECT_EQ (splitBentPlanes (r.set, rspd_test::unitParameters (), patches), 0u);
+  // Zero-length normals on one side: no direction to confirm anything, no edge.
+  for (const auto i : r.faces[1])
+    r.set.normals[i].setZero ();
+  EXPECT_FALSE (isEdgeTheNormalsConfirm (r.set, fit, rspd_test::unitParameters ()));
 }
 
 TEST (BentPlanes, NormalsTurningSteadilyConfirmNoEdge)
