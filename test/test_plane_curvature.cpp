@@ -189,6 +189,34 @@ TEST (FlatPatch, TubeSampledAllRoundIsNoPlane)
   EXPECT_TRUE (isFlatPatch (p, params, patchOf (strip, 0.02, 0.1), true));
 }
 
+TEST (FlatPatch, TubeStandingOnAPlaneIsNoPlane)
+{
+  // The same pipe holding three samples of the ground it stands on, which lie in its band on one side
+  // beyond it: they stretch its narrow side's range from 0.3 to 0.65 m, but not the inner 95 % of
+  // its samples, and it stays a tube (a pipe on a plant's ground, 429 samples and 6 strays, was kept
+  // as a plane when the narrow side was the range).
+  PointSet s;
+  auto m = addCylinderArc (s, 0.15, M_PI, 120, 0.005f, 1, 4.0);
+  for (const float x : {0.25f, 0.35f, 0.5f})
+  {
+    m.push_back (static_cast<std::uint32_t> (s.points.size ()));
+    s.points.emplace_back (x, 0.01f, 0.0f);
+    s.normals.emplace_back (0.0f, 0.0f, 1.0f);
+    s.input_indices.push_back (static_cast<pcl::index_t> (s.input_indices.size ()));
+  }
+  const PlaneCurvature c = measureCurvature (s, m);
+  EXPECT_NEAR (c.minor_extent, 0.3, 0.03);
+  // A tube's MDP (median + 3 MAD of |d|) is 1.4-1.8 times its radius: 0.2 here, against half the
+  // narrow side, 0.16 (0.33 by the range).
+  DetectorParameters params;
+  EXPECT_FALSE (isFlatPatch (s, params, patchOf (m, 0.2, 40.0 * M_PI / 180.0), true));
+  // A strip 0.3 m wide keeps its width: the inner 95 % of a uniform strip, scaled back.
+  std::mt19937 rng (5);
+  PointSet p;
+  const auto strip = addNoisyRectangle (p, 4.0, 0.3, 400, 0.008f, rng);
+  EXPECT_NEAR (measureCurvature (p, strip).minor_extent, 0.3, 0.015);
+}
+
 TEST (FlatPatch, CylinderArcIsBentEitherWay)
 {
   // A 40° arc of a cylinder, 2,000 samples: its bend explains most of the residual and turns the

@@ -25,7 +25,7 @@ struct PlaneCurvature
 {
   double share = 0.0;        ///< 1 - RSS(quadric) / RSS(plane): share of the residual a quadric explains
   double half_bend = 0.0;    ///< radians the quadric's normal turns from the middle of the samples to their rim
-  double minor_extent = 0.0; ///< extent of the samples along their plane's second principal axis (its narrow side)
+  double minor_extent = 0.0; ///< width of the samples along their plane's second principal axis (its narrow side): their range, or their inner 95 % / 0.95 where less
   std::size_t samples = 0;   ///< samples measured; 0 when too few (fewer than 12) or no residual
   Eigen::Vector3d normal = Eigen::Vector3d::Zero (); ///< the samples' least-squares plane normal
   Eigen::Vector3d along = Eigen::Vector3d::Zero ();  ///< in that plane, the quadric's most curved direction
