@@ -31,7 +31,7 @@ using rspd_tools::UsageError;
 
 const char* const kUsage =
     "usage: rspd_segment [INPUT.pcd|INPUT.ply | --demo] [-o OUT.pcd] [--planes OUT.csv] [--png OUT.png]"
-    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-bend-band on|off] [--position-bend-slabs on|off] [--position-join on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-parts on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--bent-normals on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
+    " [--png-size WxH] [-k 50] [--normal-scale fixed|adaptive|auto] [--given-normals check|keep] [--depth-levels keep|dither] [--coplanar-merge on|off] [--left-normals auto|trimmed|pca] [--shifted-grid on|off] [--rim-retest on|once|off] [--left-retest on|off] [--position-planes on|off] [--position-surfaces on|off] [--position-normals on|off] [--position-bend-band on|off] [--position-bend-slabs on|off] [--position-join on|off] [--position-ladder on|off] [--ladder-rungs on|off] [--tail-odds on|off] [--surrounding-clutter on|off] [--member-gaps on|off] [--rim-bands on|off] [--release on|off] [--released-planes on|off] [--edge-sides on|off] [--edge-corners on|off] [--edge-wedges on|off] [--step-sides on|off] [--step-regions on|off] [--thick-join on|off] [--small-thick-join on|off] [--noisy-groups on|off] [--noisy-lone on|off] [--noisy-ladder on|off] [--noisy-t2 on|off] [--thick-follow on|off] [--support on|off] [--support-clutter on|off] [--final-parts on|off] [--final-refit on|off] [--connected-parts on|off] [--bent-split on|off] [--bent-side-mnd on|off] [--bent-normals on|off] [--layer-merge on|off] [--layer-steps on|off] [--step-split on|off] [--across-steps on|off]"
     " [--normal-fit pca|trimmed] [--edge-normals on|off] [--frame planes|axes] [--outlier-seeds retest|drop|keep] [--volume-layers on|off] [--final-volume-layers on|off] [--in-band-layers on|off] [--flat-layers on|off] [--small-completion on|off] [--bounded-reestimate on|off] [--noisy-bent-split on|off] [--curved-check on|off] [--late-curved on|off] [--curved-turn on|off] [--curved-fold-sides on|off] [--tube-check on|off] [--curved-parts on|off] [--bend-test noise|share] [--hinge-normals on|off] [--assign edges|tails|all|none] [--threads N] [-v]";
 
 const char* const kHelp =
@@ -109,6 +109,10 @@ const char* const kHelp =
     "                   the plane's members (its gap to the nearest within 6 times theirs), not\n"
     "                   through the clutter beside a rim (default on; off = by distance, normal\n"
     "                   and neighbours alone)\n"
+    "  --rim-bands on|off  beside a plane with no clutter around it, the last assignment also gives\n"
+    "                   it a point within its band whose neighbours in the band are at least a\n"
+    "                   third its members, neighbours off the band not counted: a rim whose\n"
+    "                   normals a surface beside it tilts (default on; off = most neighbours)\n"
     "  --release on|off once growth is stable, members farther than 3 robust sigma from their\n"
     "                   plane are offered to the neighbouring planes (default on; off = the paper:\n"
     "                   members are never revoked)\n"
@@ -296,6 +300,7 @@ struct Options
   bool ladder_rungs = true;
   bool tail_odds = true;
   bool member_gaps = true;
+  bool rim_bands = true;
   bool surrounding_clutter = true;
   bool hinge_normals = true;
   bool release = true;
@@ -458,6 +463,8 @@ parseArguments (int argc, char** argv)
       o.tail_odds = option.choice ("on", "off");
     else if (arg == "--member-gaps")
       o.member_gaps = option.choice ("on", "off");
+    else if (arg == "--rim-bands")
+      o.rim_bands = option.choice ("on", "off");
     else if (arg == "--surrounding-clutter")
       o.surrounding_clutter = option.choice ("on", "off");
     else if (arg == "--release")
@@ -737,6 +744,7 @@ run (const Options& o)
   seg.setPositionLadderRungs (o.ladder_rungs);
   seg.setTailOdds (o.tail_odds);
   seg.setMemberGaps (o.member_gaps);
+  seg.setRimBands (o.rim_bands);
   seg.setSurroundingClutter (o.surrounding_clutter);
   seg.setHingeNormalTurn (o.hinge_normals);
   seg.setFarMemberRelease (o.release);

@@ -210,6 +210,24 @@ labelsAround (const NeighborGraph& graph, const std::vector<std::uint32_t>& labe
   return a;
 }
 
+/** Rim bands (DetectorParameters::rim_bands): whether sample \a i, within \a plane's MDP, has at
+  * least a third of its neighbours within the plane's \a band among the plane's members (\a held of
+  * them; its other neighbours hold no plane). Neighbours off the band are another surface, or
+  * clutter, and do not count. */
+bool
+insideRimBand (const PointSet& points, const NeighborGraph& graph, const std::vector<std::uint32_t>& labels,
+               const PlanarPatch& plane, double band, std::uint32_t i, int held)
+{
+  const auto offset = [&] (std::uint32_t j) {
+    return std::abs ((points.points[j].cast<double> () - plane.center).dot (plane.normal));
+  };
+  if (!(offset (i) <= plane.mdp))
+    return false;
+  int free_in_band = 0;
+  graph.forEachNeighbor (i, [&] (std::uint32_t n) { free_in_band += labels[n] == kNoPatch && offset (n) <= band; });
+  return 2 * held >= free_in_band;
+}
+
 /** The shell, in robust standard deviations of a plane, where its Gaussian noise leaves next to
   * nothing (a 6.8·10⁻⁶ share beyond 4.5 σ, under one sample of a 100,000-sample plane) and the samples
   * beside it that no plane holds are clutter; near enough that the Tails rule's conditions pass
@@ -334,7 +352,7 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
   const std::vector<double> median = tails ? medianDistances (points, params, patches) : std::vector<double> ();
   std::vector<double> tail_limit = tails ? bandsOf (patches, median, kTailSigmas) : std::vector<double> ();
   // Planes in clutter: where the clutter beside a plane outweighs its noise within its 4 σ tail.
-  std::vector<char> in_clutter;
+  std::vector<char> in_clutter, clean;
   if (tails && (params.tail_odds || params.member_gaps))
   {
     std::vector<double> bounded = tail_limit;
@@ -349,6 +367,9 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
     if (params.member_gaps)
       for (std::size_t l = 0; l < patches.size (); ++l)
         in_clutter.push_back (bounded[l] < tail_limit[l]);
+    if (params.rim_bands)
+      for (std::size_t l = 0; l < patches.size (); ++l)
+        clean.push_back (!(bounded[l] < tail_limit[l]));
     if (params.tail_odds)
       tail_limit = bounded;
   }
@@ -400,7 +421,10 @@ assignRemainingSamples (const PointSet& points, const NeighborGraph& graph, cons
         const NeighbourLabels around = labelsAround (graph, labels, i);
         // A tail sample lies inside its plane: most of its neighbours are members. (Beside the
         // plane's rim, the unlabelled samples may be a surface no seed reached.)
-        if (!around.several && !(tails && around.insideOne ()))
+        bool inside = tails && around.insideOne ();
+        if (!inside && !clean.empty () && !around.several && around.first != kNoPatch && clean[around.first])
+          inside = insideRimBand (points, graph, labels, patches[around.first], edge_limit[around.first], i, around.held);
+        if (!around.several && !inside)
           continue;
         beside_one = !around.several;
       }

@@ -230,7 +230,10 @@ TEST (DepthLevels, DitheredLevelsOfACameraViewOfTheRoomMakeNoPlanesOfTheirOwn)
 {
   // The room's far wall 5.7° off square to the camera: its terraces, and the pillar's, were planes
   // of their own (measured: 25 planes for 11, 11 fragments, 4 false planes, F1 0.970; dithered 11
-  // planes, one fragment, no false plane, F1 0.991). The caller's cloud is not changed.
+  // planes, one fragment, no false plane, F1 0.991). Since the rim bands the planes' rims take most
+  // of the terraces beside them before those are judged (measured: 19 planes, 8 fragments, one false
+  // plane, F1 0.990 as given; dithered 11, one fragment, none, 0.992). The caller's cloud is not
+  // changed.
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
   std::vector<std::uint32_t> truth;
   cameraView (Eigen::Vector3d (0.995, 0.0998, 0.0), *cloud, truth);
@@ -241,11 +244,11 @@ TEST (DepthLevels, DitheredLevelsOfACameraViewOfTheRoomMakeNoPlanesOfTheirOwn)
   EXPECT_EQ (levels_kept, 0u);
   EXPECT_GE (levels_dithered, 100u);
   EXPECT_GE (kept.fragments, 5);
-  EXPECT_GE (kept.false_planes, 3);
+  EXPECT_GE (kept.false_planes, 1);
   EXPECT_LE (dithered.fragments, 2);
-  EXPECT_LE (dithered.false_planes, 1);
+  EXPECT_EQ (dithered.false_planes, 0);
   EXPECT_GE (dithered.found, kept.found);
-  EXPECT_GT (dithered.f1, kept.f1 + 0.01);
+  EXPECT_GT (dithered.f1, kept.f1 + 0.001);
   ASSERT_EQ (cloud->size (), before.size ());
   for (std::size_t i = 0; i < cloud->size (); ++i)
     ASSERT_EQ ((*cloud)[i].getVector3fMap (), before[i].getVector3fMap ()) << i;

@@ -969,6 +969,7 @@ TEST (RobustPlaneSegmentation, EverySwitchRoundTripsThroughItsGetter)
     RSPD_SWITCH (TailOdds),
     RSPD_SWITCH (SurroundingClutter),
     RSPD_SWITCH (MemberGaps),
+    RSPD_SWITCH (RimBands),
     RSPD_SWITCH (HingeNormalTurn),
     RSPD_SWITCH (FarMemberRelease),
     RSPD_SWITCH (ReleasedPlaneSeeding),

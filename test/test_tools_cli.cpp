@@ -339,6 +339,9 @@ TEST (SegmentCli, DepartureSwitches)
   EXPECT_TRUE (room == labels ("r.pcd", "room_gaps_on.pcd", {"--member-gaps", "on"}));
   labels ("r.pcd", "room_gaps_off.pcd", {"--member-gaps=off"}); // accepted (status 0)
   EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--member-gaps", "no"}).status, 2);
+  EXPECT_TRUE (room == labels ("r.pcd", "room_rim_bands_on.pcd", {"--rim-bands", "on"}));
+  labels ("r.pcd", "room_rim_bands_off.pcd", {"--rim-bands=off"}); // accepted (status 0)
+  EXPECT_EQ (runTool (segment, {dir.file ("r.pcd"), "--rim-bands", "no"}).status, 2);
   EXPECT_TRUE (room == labels ("r.pcd", "room_release_on.pcd", {"--release", "on"}));
   EXPECT_FALSE (room == labels ("r.pcd", "room_release_off.pcd", {"--release=off"}));
   EXPECT_TRUE (room == labels ("r.pcd", "room_sides_on.pcd", {"--edge-sides", "on"}));

@@ -192,6 +192,10 @@ struct RobustPlane
   *    nearest within 6 times the gaps of the supported members beside it (a joiner vouches with
   *    the spacing that admitted it), so the rounds do not chain the plane from outlier to outlier
   *    through the clutter beyond its rim;
+  *  - rim bands (setRimBands(false) for "most of its neighbours members" alone): beside a clean
+  *    plane, a sample within its MDP joins it where its members are at least a third of its
+  *    neighbours within the plane's band, so the ring whose normals a surface bending away beside
+  *    the rim tilts (a tank's flat top at its wall) is its plane's;
   *  - position planes (setPositionPlanes(false) for the paper): then, among the samples no plane
   *    holds, planes fitted by position alone in each part the k-NN graph connects, kept if ε or more
   *    lie within the noise of the noisiest plane found and bend no more than noise (a small face
@@ -608,6 +612,18 @@ public:
   /** \brief Whether the last assignment keeps to the spacing of each plane's members. */
   bool
   getMemberGaps () const { return params_.member_gaps; }
+
+  /** \brief Rim bands (default true; false = a sample joins a plane beside it only when most of its
+    * neighbours are members): beside a plane with no clutter around it, the last assignment also
+    * gives it a sample within its MDP whose neighbours within its band are at least a third its
+    * members, counting no neighbour off the band, so that a rim whose normals tilt toward a surface
+    * bending away beside it (a tank's flat top at its wall) joins its plane. See
+    * pcl::rspd::DetectorParameters::rim_bands. */
+  void
+  setRimBands (bool enable);
+  /** \brief Whether the last assignment takes a clean plane's rim band. */
+  bool
+  getRimBands () const { return params_.rim_bands; }
 
   /** \brief Normals turn at a hinge (default true; false = positions alone): a seed or a group of
     * cells is bent at an edge, and seeds nothing, only if its two sides' mean normals turn by more

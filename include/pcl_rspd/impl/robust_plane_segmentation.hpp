@@ -425,6 +425,13 @@ RobustPlaneSegmentation<PointT, NormalT>::setMemberGaps (bool enable)
 }
 
 template <typename PointT, typename NormalT> void
+RobustPlaneSegmentation<PointT, NormalT>::setRimBands (bool enable)
+{
+  params_.rim_bands = enable;
+  invalidate ();
+}
+
+template <typename PointT, typename NormalT> void
 RobustPlaneSegmentation<PointT, NormalT>::setHingeNormalTurn (bool enable)
 {
   params_.hinge_normal_turn = enable;
