@@ -212,8 +212,9 @@ labelsAround (const NeighborGraph& graph, const std::vector<std::uint32_t>& labe
 
 /** Rim bands (DetectorParameters::rim_bands): whether sample \a i, within \a plane's MDP, has at
   * least a third of its neighbours within the plane's \a band among the plane's members (\a held of
-  * them; its other neighbours hold no plane). Neighbours off the band are another surface, or
-  * clutter, and do not count. */
+  * them; its other neighbours hold no plane), and some neighbour off the band. Neighbours off the
+  * band are another surface, or clutter, and do not count; without one, nothing beside the plane
+  * tilted the sample's normal (the pipe a false plane runs through lies wholly in its band). */
 bool
 insideRimBand (const PointSet& points, const NeighborGraph& graph, const std::vector<std::uint32_t>& labels,
                const PlanarPatch& plane, double band, std::uint32_t i, int held)
@@ -223,9 +224,13 @@ insideRimBand (const PointSet& points, const NeighborGraph& graph, const std::ve
   };
   if (!(offset (i) <= plane.mdp))
     return false;
-  int free_in_band = 0;
-  graph.forEachNeighbor (i, [&] (std::uint32_t n) { free_in_band += labels[n] == kNoPatch && offset (n) <= band; });
-  return 2 * held >= free_in_band;
+  int free_in_band = 0, off_band = 0;
+  graph.forEachNeighbor (i, [&] (std::uint32_t n) {
+    const bool in_band = offset (n) <= band;
+    free_in_band += labels[n] == kNoPatch && in_band;
+    off_band += !in_band;
+  });
+  return off_band > 0 && 2 * held >= free_in_band;
 }
 
 /** The shell, in robust standard deviations of a plane, where its Gaussian noise leaves next to

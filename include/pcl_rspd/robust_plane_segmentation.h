@@ -194,8 +194,8 @@ struct RobustPlane
   *    through the clutter beyond its rim;
   *  - rim bands (setRimBands(false) for "most of its neighbours members" alone): beside a clean
   *    plane, a sample within its MDP joins it where its members are at least a third of its
-  *    neighbours within the plane's band, so the ring whose normals a surface bending away beside
-  *    the rim tilts (a tank's flat top at its wall) is its plane's;
+  *    neighbours within the plane's band and some neighbour lies off it, so the ring whose normals
+  *    a surface bending away beside the rim tilts (a tank's flat top at its wall) is its plane's;
   *  - position planes (setPositionPlanes(false) for the paper): then, among the samples no plane
   *    holds, planes fitted by position alone in each part the k-NN graph connects, kept if ε or more
   *    lie within the noise of the noisiest plane found and bend no more than noise (a small face
@@ -616,7 +616,7 @@ public:
   /** \brief Rim bands (default true; false = a sample joins a plane beside it only when most of its
     * neighbours are members): beside a plane with no clutter around it, the last assignment also
     * gives it a sample within its MDP whose neighbours within its band are at least a third its
-    * members, counting no neighbour off the band, so that a rim whose normals tilt toward a surface
+    * members, counting no neighbour off the band (and one at least lies off it), so that a rim whose normals tilt toward a surface
     * bending away beside it (a tank's flat top at its wall) joins its plane. See
     * pcl::rspd::DetectorParameters::rim_bands. */
   void
