@@ -3,13 +3,15 @@
  * normals, each in a process of its own, and compare time, peak memory and the paper's scores.
  * SPDX-License-Identifier: BSD-3-Clause
  *
- *   rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--phases N] [--methods rspd,sac,rg] [--json]
+ *   rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--phases N] [--methods rspd,sac,rg,...] [--json]
  *   rspd_compare --scene NAME [-n N] [--seed S] [...same options]
  *
  * Methods:
  *  - rspd: pcl::RobustPlaneSegmentation with its defaults and the shared normals;
  *  - sac:  pcl::SACSegmentation (RANSAC, plane) in the usual extract-and-repeat loop;
- *  - rg:   pcl::RegionGrowing with the shared normals, one least-squares plane per region.
+ *  - rg:   pcl::RegionGrowing with the shared normals, one least-squares plane per region;
+ *  - cgal_rg, cgal_ransac: CGAL's region growing and Efficient RANSAC (cgal_peers.h), in builds
+ *    made where CGAL is installed; the settings of issue #6's peer table.
  * Every method labels the points 0 (no plane) and 1..K by decreasing plane size.
  *
  * Exit status: 0 when the comparison was printed (a method whose process crashed or was killed is
@@ -17,6 +19,7 @@
  * normals cannot be computed, 2 on a usage error. Errors are one line on stderr.
  */
 
+#include "cgal_peers.h"
 #include "child_process.h"
 #include "cloud_io.h"
 #include "command_line.h"
@@ -68,7 +71,7 @@ parseInteger (const std::string& s, long long lo, long long hi, long long& value
 }
 
 const char* const kUsage =
-    "usage: rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--phases N] [--methods rspd,sac,rg]\n"
+    "usage: rspd_compare CLOUD [TRUTH] [-k 50] [--threads N] [--voxel 0.01] [--phases N] [--methods LIST]\n"
     "                    [--json]\n"
     "       rspd_compare --scene NAME [-n N] [--seed S] [options]";
 
@@ -89,7 +92,8 @@ const char* const kHelp =
     "                   by fixed fractions of a voxel (as rspd_evaluate --phases): F1's median and\n"
     "                   lowest over them, since where bands or rims lie near voxel boundaries F1\n"
     "                   moves with the grid alone\n"
-    "  --methods LIST   comma-separated subset of rspd,sac,rg, run in that order (default all)\n"
+    "  --methods LIST   comma-separated subset of rspd,sac,rg,cgal_rg,cgal_ransac, run in that order\n"
+    "                   (default rspd,sac,rg; the cgal_ methods only in builds with CGAL)\n"
     "  --json           print one JSON object instead of the table\n"
     "\n"
     "Exit status: 0 success (failed methods are reported as such), 1 bad input, 2 usage error.\n";
@@ -222,8 +226,13 @@ parseArguments (int argc, char** argv)
       {
         const std::size_t comma = std::min (v.find (',', start), v.size ());
         const std::string name = v.substr (start, comma - start);
-        if (name != "rspd" && name != "sac" && name != "rg")
-          throw UsageError{"--methods takes a comma-separated subset of rspd,sac,rg (got '" + v + "')"};
+        const bool cgal = name == "cgal_rg" || name == "cgal_ransac";
+        if (name != "rspd" && name != "sac" && name != "rg" && !cgal)
+          throw UsageError{"--methods takes a comma-separated subset of rspd,sac,rg,cgal_rg,cgal_ransac (got '" +
+                           v + "')"};
+        if (cgal && !rspd_tools::haveCgalPeers ())
+          throw UsageError{"--methods " + name + ": this rspd_compare was built without CGAL (install libcgal-dev "
+                           "and rebuild)"};
         if (std::find (o.methods.begin (), o.methods.end (), name) != o.methods.end ())
           throw UsageError{"--methods names '" + name + "' twice"};
         o.methods.push_back (name);
@@ -278,6 +287,9 @@ struct Context
   unsigned int rg_neighbours = 30;
   double rg_smoothness_deg = 3.0;
   double rg_curvature = 1.0;
+  std::size_t cgal_rg_neighbours = 12;
+  double cgal_rg_distance = 0.0;               ///< 1 % of extent
+  double cgal_rg_angle_deg = 25.0;
 };
 
 /** \brief What a method hands back from its process. */
@@ -464,6 +476,59 @@ runRegionGrowing (const Context& c)
   return d;
 }
 
+/** \brief One of CGAL's detectors (cgal_peers.h) on the finite points with finite shared normals;
+  * every region becomes a plane, fitted by least squares as for rg. */
+Detection
+runCgal (const Context& c, bool region_growing)
+{
+  Detection d;
+  const auto t0 = std::chrono::steady_clock::now ();
+  std::vector<float> xyz, nxyz;
+  std::vector<pcl::index_t> source; // the cloud's index of each point handed to CGAL
+  for (const pcl::index_t i : *c.finite)
+  {
+    const pcl::Normal& n = (*c.normals)[i];
+    if (!std::isfinite (n.normal_x) || !std::isfinite (n.normal_y) || !std::isfinite (n.normal_z))
+      continue;
+    const pcl::PointXYZ& p = (*c.cloud)[i];
+    xyz.insert (xyz.end (), {p.x, p.y, p.z});
+    nxyz.insert (nxyz.end (), {n.normal_x, n.normal_y, n.normal_z});
+    source.push_back (i);
+  }
+  std::vector<std::vector<std::size_t>> regions;
+  if (region_growing)
+  {
+    rspd_tools::CgalPeerSettings s;
+    s.rg_neighbours = c.cgal_rg_neighbours;
+    s.rg_max_distance = c.cgal_rg_distance;
+    s.rg_max_angle_deg = c.cgal_rg_angle_deg;
+    s.min_region_size = c.min_plane_points;
+    regions = rspd_tools::cgalRegionGrowing (xyz, nxyz, s);
+  }
+  else
+    regions = rspd_tools::cgalEfficientRansac (xyz, nxyz);
+
+  d.labels.assign (c.cloud->size (), 0);
+  pcl::Indices members;
+  for (std::size_t r = 0; r < regions.size (); ++r)
+  {
+    members.clear ();
+    for (const std::size_t j : regions[r])
+      members.push_back (source[j]);
+    Eigen::Vector4f plane;
+    float curvature = 0.0f;
+    pcl::computePointNormal (*c.cloud, members, plane, curvature);
+    d.planes.insert (d.planes.end (), plane.data (), plane.data () + 4);
+    for (const pcl::index_t i : members)
+      d.labels[i] = static_cast<std::uint32_t> (r + 1);
+  }
+  sortPlanesBySize (d);
+  d.seconds = secondsSince (t0);
+  if (source.size () < c.finite->size ())
+    d.note = std::to_string (c.finite->size () - source.size ()) + " points without a normal left out";
+  return d;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Child processes
 // ---------------------------------------------------------------------------------------------
@@ -540,7 +605,11 @@ MethodResult
 runMethod (const std::string& name, const Context& c)
 {
   const auto work = [&] () {
-    const Detection d = name == "rspd" ? runRspd (c) : name == "sac" ? runSac (c) : runRegionGrowing (c);
+    const Detection d = name == "rspd"          ? runRspd (c)
+                        : name == "sac"         ? runSac (c)
+                        : name == "rg"          ? runRegionGrowing (c)
+                        : name == "cgal_rg"     ? runCgal (c, true)
+                                                : runCgal (c, false);
     ByteWriter w;
     w.put (d.seconds);
     w.putVector (d.labels);
@@ -676,6 +745,15 @@ printText (const Summary& s, const Context& c, const std::vector<MethodResult>& 
                "min cluster %zu points (max(10, 0.1 %% of points)), shared normals; least-squares plane per "
                "region (pcl::computePointNormal)\n",
                c.rg_neighbours, c.rg_smoothness_deg, c.rg_curvature, c.min_plane_points);
+  const auto cgal = [] (const MethodResult& m) { return m.name.rfind ("cgal", 0) == 0; };
+  if (std::any_of (results.begin (), results.end (), cgal))
+    std::printf ("parameters: cgal_rg: CGAL Shape_detection region growing, least-squares plane fit region and "
+                 "sorting, k = %zu (its K_neighbor_query), distance %.6g (1 %% of the largest extent), %g deg, "
+                 "min region %zu points; cgal_ransac: CGAL Efficient_RANSAC, planes, its defaults (probability "
+                 "0.01, min points 1 %% of points, epsilon and cluster epsilon 1 %% of the bounding box "
+                 "diagonal, normal threshold 0.9), fixed seed 12345; both on the shared normals, points "
+                 "without one left out, a least-squares plane per region\n",
+                 c.cgal_rg_neighbours, c.cgal_rg_distance, c.cgal_rg_angle_deg, c.min_plane_points);
   std::printf ("parameters: labels 0 = none, 1..K by decreasing size; time = detection wall time in the method's "
                "own process; peak = that process's max RSS (wait4), start = its RSS before the detection "
                "(inherited cloud and normals)%s\n",
@@ -684,7 +762,10 @@ printText (const Summary& s, const Context& c, const std::vector<MethodResult>& 
                                                   : "").c_str ()
                            : "");
 
-  std::printf ("%-6s %7s %9s %8s %8s %10s", "method", "planes", "time (s)", "peak MB", "start MB", "rms");
+  int width = 6;
+  for (const MethodResult& m : results)
+    width = std::max (width, static_cast<int> (m.name.size ()));
+  std::printf ("%-*s %7s %9s %8s %8s %10s", width, "method", "planes", "time (s)", "peak MB", "start MB", "rms");
   if (s.has_truth)
     std::printf (" %9s %7s %7s %7s %9s %5s", "precision", "recall", "F1", "found", "fragments", "false");
   if (s.has_truth && s.phases > 0)
@@ -694,10 +775,10 @@ printText (const Summary& s, const Context& c, const std::vector<MethodResult>& 
   {
     if (!m.ok)
     {
-      std::printf ("%-6s failed: %s (peak %.1f MB)\n", m.name.c_str (), m.failure.c_str (), m.peak_mb);
+      std::printf ("%-*s failed: %s (peak %.1f MB)\n", width, m.name.c_str (), m.failure.c_str (), m.peak_mb);
       continue;
     }
-    std::printf ("%-6s %7zu %9.3f %8.1f %8.1f %10.4g", m.name.c_str (), m.detection.numPlanes (),
+    std::printf ("%-*s %7zu %9.3f %8.1f %8.1f %10.4g", width, m.name.c_str (), m.detection.numPlanes (),
                  m.detection.seconds, m.peak_mb, m.start_mb, m.rms);
     if (m.evaluated)
       std::printf (" %9.4f %7.4f %7.4f %7s %9d %5d", m.scores.precision, m.scores.recall, m.scores.f1,
@@ -721,9 +802,11 @@ printJson (const Summary& s, const Context& c, const std::vector<MethodResult>& 
   j += format (", \"voxel_ratio\": %.10g", s.voxel);
   j += format (", \"parameters\": {\"threads\": %d, \"min_plane_points\": %zu, \"sac_threshold\": %.10g, "
                "\"sac_threshold_ratio\": 0.01, \"sac_max_iterations\": %d, \"sac_max_planes\": %zu, "
-               "\"sac_seed\": 12345, \"rg_neighbours\": %u, \"rg_smoothness_deg\": %g, \"rg_curvature\": %g}",
+               "\"sac_seed\": 12345, \"rg_neighbours\": %u, \"rg_smoothness_deg\": %g, \"rg_curvature\": %g, "
+               "\"cgal_rg_neighbours\": %zu, \"cgal_rg_distance\": %.10g, \"cgal_rg_angle_deg\": %g}",
                c.threads, c.min_plane_points, c.sac_threshold, c.sac_max_iterations, c.sac_max_planes,
-               c.rg_neighbours, c.rg_smoothness_deg, c.rg_curvature);
+               c.rg_neighbours, c.rg_smoothness_deg, c.rg_curvature, c.cgal_rg_neighbours, c.cgal_rg_distance,
+               c.cgal_rg_angle_deg);
   j += ", \"methods\": [";
   for (std::size_t i = 0; i < results.size (); ++i)
   {
@@ -838,6 +921,7 @@ run (const Options& o)
   pcl::getMinMax3D (*c.cloud, *c.finite, lo, hi);
   c.extent = (hi - lo).head<3> ().maxCoeff ();
   c.sac_threshold = 0.01 * c.extent;
+  c.cgal_rg_distance = 0.01 * c.extent;
   c.min_plane_points =
       std::max<std::size_t> (10, static_cast<std::size_t> (std::ceil (0.001 * static_cast<double> (s.finite))));
 

@@ -3,7 +3,7 @@
 set -euo pipefail
 # Extra package names given as arguments are installed too (scripts/fuzz.sh passes clang's).
 packages=(cmake g++ make pkg-config libpcl-dev libeigen3-dev libflann-dev libboost-dev libgtest-dev
-          libpng-dev python3-catkin-pkg python3-numpy libbenchmark-dev "$@")
+          libpng-dev python3-catkin-pkg python3-numpy libbenchmark-dev libcgal-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

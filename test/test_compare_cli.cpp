@@ -134,6 +134,33 @@ TEST (CompareCli, MethodSubsetInOrder)
   EXPECT_LT (rg, rspd);
 }
 
+// CGAL's region growing and Efficient RANSAC run as further peers where the build has CGAL, and are
+// refused with a usage error naming the cause where it has not.
+TEST (CompareCli, CgalPeers)
+{
+  REQUIRE_COMPARE_BINARY ();
+  const RunResult r = runCompare ({"--scene", "cube", "-n", "20000", "--methods", "cgal_rg,cgal_ransac,rspd"});
+#ifdef PCL_RSPD_CGAL_PEERS
+  ASSERT_EQ (r.status, 0) << r.err;
+  EXPECT_NE (r.out.find ("CGAL Efficient_RANSAC"), std::string::npos) << r.out;
+  for (const char* method : {"cgal_rg", "cgal_ransac"})
+  {
+    const std::vector<std::string> w = row (r.out, method);
+    ASSERT_GT (w.size (), kFound) << "no complete row for " << method << " in:\n" << r.out;
+    // A cube's six large faces: each peer finds most of them, and labels stay in range.
+    EXPECT_GT (std::stod (w[kF1]), 0.5) << method;
+    EXPECT_GE (std::stoi (w[kPlanes]), 4) << method;
+  }
+  const RunResult j = runCompare ({"--scene", "cube", "-n", "5000", "--methods", "cgal_rg", "--json"});
+  ASSERT_EQ (j.status, 0) << j.err;
+  EXPECT_NE (j.out.find ("\"name\": \"cgal_rg\""), std::string::npos) << j.out;
+  EXPECT_NE (j.out.find ("\"cgal_rg_angle_deg\": 25"), std::string::npos) << j.out;
+#else
+  EXPECT_EQ (r.status, 2);
+  EXPECT_NE (r.err.find ("built without CGAL"), std::string::npos) << r.err;
+#endif
+}
+
 TEST (CompareCli, KilledMethodIsReportedNotFatal)
 {
   REQUIRE_COMPARE_BINARY ();
