@@ -5,6 +5,8 @@
 # labelling is also scored on 16 voxel grids (the paper's and 15 shifted by fixed fractions of a
 # voxel, rspd_compare --phases): F1's median and lowest over them, since where a plane's noise band
 # or rim lies near a voxel boundary the paper's single grid moves F1 by itself.
+# RSPD_METHODS picks the methods (default rspd,sac,rg; rspd,sac,rg,cgal_rg,cgal_ransac adds CGAL's
+# region growing and Efficient RANSAC, the issue table's other peers, in a build with CGAL).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 compare=./build/rspd_compare
@@ -20,7 +22,7 @@ echo "| cloud | points | method | planes | F1 | precision | recall | found | fra
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for r in "${runs[@]}"; do
   # shellcheck disable=SC2086
-  $compare $r --phases 16 --json | /usr/bin/python3 -c '
+  $compare $r --phases 16 --methods "${RSPD_METHODS:-rspd,sac,rg}" --json | /usr/bin/python3 -c '
 import json, os, sys
 j = json.load(sys.stdin)
 name = os.path.basename(j["cloud"].split(" ")[0] if j["cloud"].startswith("/") or j["cloud"].startswith(".") else j["cloud"].replace(" (seed 1)", ""))
