@@ -287,9 +287,8 @@ struct Context
   unsigned int rg_neighbours = 30;
   double rg_smoothness_deg = 3.0;
   double rg_curvature = 1.0;
-  std::size_t cgal_rg_neighbours = 12;
-  double cgal_rg_distance = 0.0;               ///< 1 % of extent
-  double cgal_rg_angle_deg = 25.0;
+  /** cgal_rg: k 12, 25°, distance 1 % of extent and min region min_plane_points (set with them). */
+  rspd_tools::CgalPeerSettings cgal_rg;
 };
 
 /** \brief What a method hands back from its process. */
@@ -441,6 +440,20 @@ runSac (const Context& c)
   return d;
 }
 
+/** \brief Give the points \a members (cloud indices) the next label of \a d, with their least-squares
+  * plane (pcl::computePointNormal), as the region-based methods report their regions. */
+void
+addRegion (const Context& c, const pcl::Indices& members, Detection& d)
+{
+  Eigen::Vector4f plane;
+  float curvature = 0.0f;
+  pcl::computePointNormal (*c.cloud, members, plane, curvature);
+  d.planes.insert (d.planes.end (), plane.data (), plane.data () + 4);
+  const auto label = static_cast<std::uint32_t> (d.numPlanes ());
+  for (const pcl::index_t i : members)
+    d.labels[i] = label;
+}
+
 /** \brief Region growing on the shared normals; every region becomes a plane, fitted by least
   * squares (pcl::computePointNormal) so that the method delivers plane equations like the others. */
 Detection
@@ -462,15 +475,8 @@ runRegionGrowing (const Context& c)
   rg.extract (regions);
 
   d.labels.assign (c.cloud->size (), 0);
-  for (std::size_t r = 0; r < regions.size (); ++r)
-  {
-    Eigen::Vector4f plane;
-    float curvature = 0.0f;
-    pcl::computePointNormal (*c.cloud, regions[r].indices, plane, curvature);
-    d.planes.insert (d.planes.end (), plane.data (), plane.data () + 4);
-    for (const pcl::index_t i : regions[r].indices)
-      d.labels[i] = static_cast<std::uint32_t> (r + 1);
-  }
+  for (const pcl::PointIndices& region : regions)
+    addRegion (c, region.indices, d);
   sortPlanesBySize (d);
   d.seconds = secondsSince (t0);
   return d;
@@ -495,32 +501,17 @@ runCgal (const Context& c, bool region_growing)
     nxyz.insert (nxyz.end (), {n.normal_x, n.normal_y, n.normal_z});
     source.push_back (i);
   }
-  std::vector<std::vector<std::size_t>> regions;
-  if (region_growing)
-  {
-    rspd_tools::CgalPeerSettings s;
-    s.rg_neighbours = c.cgal_rg_neighbours;
-    s.rg_max_distance = c.cgal_rg_distance;
-    s.rg_max_angle_deg = c.cgal_rg_angle_deg;
-    s.min_region_size = c.min_plane_points;
-    regions = rspd_tools::cgalRegionGrowing (xyz, nxyz, s);
-  }
-  else
-    regions = rspd_tools::cgalEfficientRansac (xyz, nxyz);
-
+  const std::vector<std::vector<std::size_t>> regions = region_growing
+                                                            ? rspd_tools::cgalRegionGrowing (xyz, nxyz, c.cgal_rg)
+                                                            : rspd_tools::cgalEfficientRansac (xyz, nxyz);
   d.labels.assign (c.cloud->size (), 0);
   pcl::Indices members;
-  for (std::size_t r = 0; r < regions.size (); ++r)
+  for (const std::vector<std::size_t>& region : regions)
   {
     members.clear ();
-    for (const std::size_t j : regions[r])
+    for (const std::size_t j : region)
       members.push_back (source[j]);
-    Eigen::Vector4f plane;
-    float curvature = 0.0f;
-    pcl::computePointNormal (*c.cloud, members, plane, curvature);
-    d.planes.insert (d.planes.end (), plane.data (), plane.data () + 4);
-    for (const pcl::index_t i : members)
-      d.labels[i] = static_cast<std::uint32_t> (r + 1);
+    addRegion (c, members, d);
   }
   sortPlanesBySize (d);
   d.seconds = secondsSince (t0);
@@ -753,7 +744,8 @@ printText (const Summary& s, const Context& c, const std::vector<MethodResult>& 
                  "0.01, min points 1 %% of points, epsilon and cluster epsilon 1 %% of the bounding box "
                  "diagonal, normal threshold 0.9), fixed seed 12345; both on the shared normals, points "
                  "without one left out, a least-squares plane per region\n",
-                 c.cgal_rg_neighbours, c.cgal_rg_distance, c.cgal_rg_angle_deg, c.min_plane_points);
+                 c.cgal_rg.rg_neighbours, c.cgal_rg.rg_max_distance, c.cgal_rg.rg_max_angle_deg,
+                 c.cgal_rg.min_region_size);
   std::printf ("parameters: labels 0 = none, 1..K by decreasing size; time = detection wall time in the method's "
                "own process; peak = that process's max RSS (wait4), start = its RSS before the detection "
                "(inherited cloud and normals)%s\n",
@@ -805,8 +797,8 @@ printJson (const Summary& s, const Context& c, const std::vector<MethodResult>& 
                "\"sac_seed\": 12345, \"rg_neighbours\": %u, \"rg_smoothness_deg\": %g, \"rg_curvature\": %g, "
                "\"cgal_rg_neighbours\": %zu, \"cgal_rg_distance\": %.10g, \"cgal_rg_angle_deg\": %g}",
                c.threads, c.min_plane_points, c.sac_threshold, c.sac_max_iterations, c.sac_max_planes,
-               c.rg_neighbours, c.rg_smoothness_deg, c.rg_curvature, c.cgal_rg_neighbours, c.cgal_rg_distance,
-               c.cgal_rg_angle_deg);
+               c.rg_neighbours, c.rg_smoothness_deg, c.rg_curvature, c.cgal_rg.rg_neighbours,
+               c.cgal_rg.rg_max_distance, c.cgal_rg.rg_max_angle_deg);
   j += ", \"methods\": [";
   for (std::size_t i = 0; i < results.size (); ++i)
   {
@@ -921,9 +913,10 @@ run (const Options& o)
   pcl::getMinMax3D (*c.cloud, *c.finite, lo, hi);
   c.extent = (hi - lo).head<3> ().maxCoeff ();
   c.sac_threshold = 0.01 * c.extent;
-  c.cgal_rg_distance = 0.01 * c.extent;
   c.min_plane_points =
       std::max<std::size_t> (10, static_cast<std::size_t> (std::ceil (0.001 * static_cast<double> (s.finite))));
+  c.cgal_rg.rg_max_distance = 0.01 * c.extent;
+  c.cgal_rg.min_region_size = c.min_plane_points;
 
   // --- normals, once for everybody
   if (loaded.normals)
